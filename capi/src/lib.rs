@@ -1,0 +1,1 @@
+//! C ABI (see docs/c-api.md).

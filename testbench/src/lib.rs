@@ -1,0 +1,1 @@
+//! Co-simulation harness (see docs/cosim.md).

@@ -1,0 +1,1 @@
+//! TMCL module layer (see docs/tmcl.md).
