@@ -5,6 +5,7 @@
 //! [`Probes`] alike.
 
 pub mod chip;
+pub mod events;
 pub mod host;
 pub mod motor;
 pub mod pins;
