@@ -4,9 +4,12 @@
 //! executable definition of the chip: the RTL in `rtl/` matches it cycle for cycle, pins and
 //! [`Probes`] alike.
 
+pub mod chain;
 pub mod chip;
+pub mod current;
 pub mod events;
 pub mod host;
+pub mod microstep;
 pub mod motor;
 pub mod pins;
 pub mod pmulpdiv;
@@ -15,6 +18,7 @@ pub mod regmap;
 pub mod regmap_render;
 pub mod script;
 pub mod spi_slave;
+pub mod stepdir;
 pub mod switches;
 pub mod sync;
 
@@ -107,6 +111,12 @@ pub struct Tmc429 {
     pub(crate) global: Global,
     pub(crate) ram: [u8; 128],
     out: Outputs,
+    /// Driver-chain SPI master (C80–C89).
+    pub(crate) chain: chain::Chain,
+    /// Current-scale selectors (C75–C77).
+    pub(crate) cur: [current::CurrentScale; 3],
+    /// Step/Dir outputs (C90–C96).
+    pub(crate) sd: stepdir::StepDir,
 }
 
 impl Tmc429 {
@@ -135,8 +145,12 @@ impl Tmc429 {
                 nscs3: true,
                 poscmp: false,
             },
+            chain: chain::Chain::reset(),
+            cur: [current::CurrentScale::default(); 3],
+            sd: stepdir::StepDir::reset(),
         };
         t.out.poscmp = t.has_pos_comp();
+        t.driver_pins(0);
         t
     }
 
@@ -204,7 +218,7 @@ impl Tmc429 {
     }
 
     fn cdgw(&self) -> bool {
-        self.global.cw || self.global.dgw
+        self.chain.cdgw(&self.global)
     }
 
     /// INT (C64).
@@ -238,7 +252,13 @@ impl Tmc429 {
                 pulse_acc: m.acc,
             };
         }
-        p.chain.cover_waiting = self.global.cw as u8;
+        let c = &self.chain;
+        p.chain.state = c.state;
+        p.chain.cell = c.cell;
+        p.chain.motor = c.motor;
+        p.chain.bit_count = c.bits;
+        p.chain.pending = c.req as u8;
+        p.chain.cover_waiting = c.cw(&self.global) as u8;
         p.chain.readback = self.global.readback;
         p
     }
@@ -272,6 +292,7 @@ impl Tmc429 {
         let mut pc_event = false;
         let match_old = self.pos_match();
         if !self.power_down {
+            self.drivers(pins);
             self.motion(pins, &mut events);
             pc_event = match_old && !self.global.pc_match_prev;
             self.global.pc_match_prev = match_old;
@@ -306,6 +327,7 @@ impl Tmc429 {
             self.out.sdoz_c_oe = self.spi.active;
             self.out.poscmp = match_old;
         }
+        self.driver_pins(pins);
         self.out
     }
 
@@ -430,7 +452,7 @@ impl Tmc429 {
                 0 => (g.readback & 0xFF_FFFF) as u32,
                 1 => ((g.readback >> 24) & 0xFF_FFFF) as u32,
                 2 => {
-                    f::COVER_WAITING.put(g.cw as u32)
+                    f::COVER_WAITING.put(self.chain.cw(g) as u32)
                         | f::COVER_POS.put((g.cover_pos as u32 + 1) & 63)
                         | f::COVER_LEN.put(g.cover_len as u32)
                 }
@@ -540,5 +562,123 @@ impl Tmc429 {
                 }
             }
         }
+    }
+}
+
+/// Driver side: microstep unit, current scaling, SPI chain and Step/Dir (C70–C99).
+impl Tmc429 {
+    /// Driver interface mode of the current state (C89, C90).
+    #[inline]
+    fn spi_mode(&self) -> bool {
+        match self.chip {
+            Chip::Tmc428 => true,
+            Chip::Tmc429 => !self.global.ifc(f::EN_SD),
+            Chip::Tmc4210 => false,
+        }
+    }
+
+    #[inline]
+    fn step_dir_mode(&self) -> bool {
+        self.chip != Chip::Tmc428 && self.global.ifc(f::EN_SD)
+    }
+
+    /// One edge of the driver units, from the old state (C1, C70). Runs before the motion core
+    /// mutates the motors, so every unit sees the step flags and indices of the previous edge.
+    #[inline]
+    fn drivers(&mut self, pins: u16) {
+        let mut ramp_ticks = 0u8;
+        if self.prescaler & 31 == PHASE_RAMP {
+            let frame = self.prescaler >> 5;
+            for (i, m) in self.motors.iter().enumerate() {
+                let mask = (1u32 << m.ramp_div) - 1;
+                ramp_ticks |= (((frame & mask) == mask) as u8) << i;
+            }
+        }
+        let spi = self.spi_mode();
+        if self.chip != Chip::Tmc4210 {
+            let sdi = (pins >> sync::bit::SDI_S) & 1 != 0;
+            self.chain.tick(spi, &self.ram, &mut self.global, &self.motors, &self.cur, ramp_ticks, sdi);
+            for (i, (c, m)) in self.cur.iter_mut().zip(self.motors.iter()).enumerate() {
+                c.tick(m, (ramp_ticks >> i) & 1 != 0);
+            }
+        }
+        let n = self.motor_count();
+        let sd = self.step_dir_mode();
+        self.sd.tick(sd, n, &self.motors, self.global.g(f::CLK2_DIV), self.global.ifc(f::STEP_HALF));
+    }
+
+    /// Drives the driver-side output pins from the new state and samples the multiplexed
+    /// reference switches on nSCS_S edges (C81, C87b, C91). `pins`: the synchronized inputs of
+    /// the old state.
+    fn driver_pins(&mut self, pins: u16) {
+        let g = &self.global;
+        if self.spi_mode() {
+            let (ncs, ncs2, ncs3, sck, sdo) = self.chain.pins(g);
+            if g.g(f::REFMUX) != 0 && ncs != self.out.nscs_s {
+                // 74HC157 on nSCS_S: left switches while the pin is high, right while low (C87).
+                let inv = self.chip != Chip::Tmc428 && g.ifc(f::INV_REF);
+                let mut mux = g.mux_switches;
+                // The pin was low before this edge → the right switches were presented.
+                let right = !self.out.nscs_s;
+                for m in 0..3u32 {
+                    let lv = ((pins >> (sync::bit::REF1 + m)) & 1 != 0) ^ inv;
+                    let b = if right { 2 * m } else { 2 * m + 1 };
+                    mux = (mux & !(1 << b)) | ((lv as u8) << b);
+                }
+                self.global.mux_switches = mux;
+            }
+            self.out.nscs_s = ncs;
+            self.out.nscs2 = ncs2;
+            self.out.nscs3 = ncs3;
+            self.out.sck_s = sck;
+            self.out.sdo_s = sdo;
+            self.out.sdi_s_o = false;
+            self.out.sdi_s_oe = false;
+            return;
+        }
+        let inv_stp = g.ifc(f::INV_STP);
+        let inv_dir = g.ifc(f::INV_DIR);
+        let sd = self.step_dir_mode();
+        match self.chip {
+            Chip::Tmc429 => {
+                // S1 = SDO_S, D1 = SCK_S, S2 = nSCS_S, D2 = SDI_S, S3 = nSCS2, D3 = nSCS3.
+                let (s1, d1) = self.sd.pins(0, inv_stp, inv_dir);
+                let (s2, d2) = self.sd.pins(1, inv_stp, inv_dir);
+                let (s3, d3) = self.sd.pins(2, inv_stp, inv_dir);
+                self.out.sdo_s = s1;
+                self.out.sck_s = d1;
+                self.out.nscs_s = s2;
+                self.out.sdi_s_o = d2;
+                self.out.sdi_s_oe = true;
+                self.out.nscs2 = s3;
+                self.out.nscs3 = d3;
+            }
+            _ => {
+                // TMC4210: STEP = SDO_S, DIR = SCK_S; logic high until en_sd = 1 (C91).
+                let (s, d) = if sd { self.sd.pins(0, inv_stp, inv_dir) } else { (true, true) };
+                self.out.sdo_s = s;
+                self.out.sck_s = d;
+                self.out.nscs_s = true;
+                self.out.nscs2 = true;
+                self.out.nscs3 = true;
+                self.out.sdi_s_o = false;
+                self.out.sdi_s_oe = false;
+            }
+        }
+    }
+
+    /// Driver-chain state (read-only).
+    pub fn chain(&self) -> &chain::Chain {
+        &self.chain
+    }
+
+    /// Current-scale selector of motor `m` (read-only).
+    pub fn current_scale(&self, m: usize) -> &current::CurrentScale {
+        &self.cur[m]
+    }
+
+    /// Step/Dir state (read-only).
+    pub fn step_dir(&self) -> &stepdir::StepDir {
+        &self.sd
     }
 }

@@ -1,0 +1,291 @@
+//! Driver-chain SPI master (TMC428 §6.3, §9.1–§9.3, §9.7, §10, §11; TMC429 §8.2.1–§8.2.5, §11;
+//! contract C80–C89).
+//!
+//! A synchronous state machine with one down-counter. Every edge computes the new state from
+//! the old state (C1): the motors' step flags, microstep indices and velocities, the RAM, the
+//! global registers and the synchronized SDI_S of the previous edge.
+//!
+//! Frame of one datagram (C82), with LO/HI the SCK_S low/high half periods and P = LO + HI:
+//! ```text
+//! IDLE ──request──► SETUP (CS active, SCK high, P edges)
+//!   ► LOW (bit on SDO_S, SCK low, LO edges) ► HIGH (SCK high, SDI_S sampled at its first edge,
+//!     HI edges) ► next bit, or GAP (NxM with motor < LSMD, G edges) ► next bit,
+//!     or HOLD (NxM with motor = LSMD, CS active, P edges)
+//!   ► CSOFF (CS inactive, P edges) ► next datagram or IDLE
+//! ```
+
+use crate::current::CurrentScale;
+use crate::microstep::{self, Polarity};
+use crate::motor::Motor;
+use crate::regmap::f;
+use crate::Global;
+
+/// Sequencer states (the `state` field of [`crate::ChainProbe`]).
+pub const IDLE: u8 = 0;
+pub const SETUP: u8 = 1;
+pub const LOW: u8 = 2;
+pub const HIGH: u8 = 3;
+pub const GAP: u8 = 4;
+pub const HOLD: u8 = 5;
+pub const CSOFF: u8 = 6;
+
+const MASK48: u64 = (1 << 48) - 1;
+/// Ramp ticks per continuous-update request of a motor: 2^(15+ramp_div) CLK / (32·2^ramp_div).
+pub const CUPD_RAMP_TICKS: u16 = 1024;
+/// The datagram bit position counter saturates here (cover positions end at 63 + 24).
+const BITS_MAX: u8 = 127;
+
+/// SCK_S timing of a clk2_div value (C81): (LO, HI, P, G) in CLK edges.
+/// LO = clk2_div + 1; HI = LO for clk2_div ≥ 7, else 15 − clk2_div (the period stays 16 CLK,
+/// the duty cycle becomes asymmetric, TMC428 §9.7); G, the NxM processing gap, is one period for
+/// clk2_div ≤ 7 and 1.5 periods above (TMC428 §9.7).
+#[inline]
+pub fn timing(clk2_div: u32) -> (u16, u16, u16, u16) {
+    let c = (clk2_div & 0xFF) as u16;
+    let lo = c + 1;
+    let hi = if c >= 7 { c + 1 } else { 15 - c };
+    let p = lo + hi;
+    let g = if c <= 7 { p } else { 3 * (c + 1) };
+    (lo, hi, p, g)
+}
+
+/// Driver-chain state.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Chain {
+    pub state: u8,
+    /// Edges left in the current state (≥ 1 while not IDLE).
+    pub cnt: u16,
+    /// Configuration RAM cell of the current bit (0..63).
+    pub cell: u8,
+    /// Motor (SMDA) of the current bit.
+    pub motor: u8,
+    /// Datagram bits sent so far (position of the current bit; saturates at 127).
+    pub bits: u8,
+    /// A request arrived and no datagram has started since (requests collapse).
+    pub req: bool,
+    /// A step of the motor since its last snapshot (code $13, C84).
+    pub stepped: [bool; 3],
+    /// Signal vectors of the three motors taken at the start of the datagram (C80).
+    pub snap: [u32; 3],
+    /// The datagram in progress carries the cover datagram (cw taken at its start).
+    pub cover_busy: bool,
+    /// A datagram_low/high_word write was pending at the start of the datagram in progress.
+    pub dgw_busy: bool,
+    /// Cover position, length (≤ 24) and data latched at the start (C85).
+    pub cov_pos: u8,
+    pub cov_len: u8,
+    pub cov_data: u32,
+    /// Ramp ticks per motor for continuous update (mod 1024, C83).
+    pub cupd: [u16; 3],
+    /// Chip select active (before polarity), SCK_S level (before polarity), SDO_S level.
+    pub cs: bool,
+    pub sck: bool,
+    pub sdo: bool,
+}
+
+impl Default for Chain {
+    fn default() -> Self {
+        Self::reset()
+    }
+}
+
+impl Chain {
+    pub fn reset() -> Self {
+        Chain {
+            state: IDLE,
+            cnt: 0,
+            cell: 0,
+            motor: 0,
+            bits: 0,
+            req: false,
+            stepped: [false; 3],
+            snap: [0; 3],
+            cover_busy: false,
+            dgw_busy: false,
+            cov_pos: 0,
+            cov_len: 0,
+            cov_data: 0,
+            cupd: [0; 3],
+            cs: false,
+            sck: true,
+            sdo: false,
+        }
+    }
+
+    /// One CLK edge of the SPI chain (C80–C89). `enabled`: the chip is in SPI mode (TMC428,
+    /// TMC429 with en_sd = 0). `ramp_ticks`: bit m = motor m has a ramp tick this cycle.
+    /// `sdi_s`: the synchronized SDI_S (C4).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub fn tick(
+        &mut self,
+        enabled: bool,
+        ram: &[u8; 128],
+        g: &mut Global,
+        motors: &[Motor; 3],
+        cur: &[CurrentScale; 3],
+        ramp_ticks: u8,
+        sdi_s: bool,
+    ) {
+        if !enabled {
+            if self.state != IDLE || self.cs || self.req || self.stepped != [false; 3] {
+                self.abort(g);
+            }
+            return;
+        }
+        // Requests (C83): a step of any motor, cw, the continuous-update timer.
+        let steps = [motors[0].step, motors[1].step, motors[2].step];
+        let mut request = self.req || steps[0] || steps[1] || steps[2] || g.cw;
+        if ramp_ticks != 0 {
+            let cont = g.g(f::CONT_UPDATE) != 0;
+            for m in 0..3 {
+                if (ramp_ticks >> m) & 1 != 0 {
+                    let wrap = self.cupd[m] == CUPD_RAMP_TICKS - 1;
+                    self.cupd[m] = (self.cupd[m] + 1) & (CUPD_RAMP_TICKS - 1);
+                    request |= wrap && cont;
+                }
+            }
+        }
+
+        let mut start = false;
+        match self.state {
+            IDLE => start = request,
+            _ if self.cnt > 1 => self.cnt -= 1,
+            SETUP | GAP => self.next_bit(ram, g),
+            LOW => {
+                // Rising SCK_S: the driver samples SDO_S; SDI_S shifts into the readback (C87).
+                self.sck = true;
+                g.readback = ((g.readback << 1) | sdi_s as u64) & MASK48;
+                self.bits = (self.bits + 1).min(BITS_MAX);
+                self.state = HIGH;
+                self.cnt = timing(g.g(f::CLK2_DIV)).1;
+            }
+            HIGH => {
+                let cell = ram[self.cell as usize & 63];
+                let (_, _, p, gap) = timing(g.g(f::CLK2_DIV));
+                if cell & 0x20 != 0 {
+                    // NxM (C86): LSMD 3 acts as 2.
+                    let lsmd = (g.g(f::LSMD) as u8).min(2);
+                    if self.motor >= lsmd {
+                        self.state = HOLD;
+                        self.cnt = p;
+                    } else {
+                        self.motor += 1;
+                        self.cell = (self.cell + 1) & 63;
+                        self.state = GAP;
+                        self.cnt = gap;
+                    }
+                } else {
+                    self.cell = (self.cell + 1) & 63;
+                    self.next_bit(ram, g);
+                }
+            }
+            HOLD => {
+                // End of the datagram: CS inactive, CDGW handshake done (C87, C88).
+                self.cs = false;
+                self.cover_busy = false;
+                self.dgw_busy = false;
+                self.state = CSOFF;
+                self.cnt = timing(g.g(f::CLK2_DIV)).2;
+            }
+            _ => {
+                // CSOFF over: the next datagram starts at once if one is requested.
+                self.state = IDLE;
+                start = request;
+            }
+        }
+
+        if start {
+            self.start(ram, g, motors, cur);
+        } else {
+            // In IDLE without a start no request is pending; elsewhere requests collapse.
+            self.req = request;
+            for m in 0..3 {
+                self.stepped[m] |= steps[m];
+            }
+        }
+    }
+
+    /// Starts a datagram (C80): snapshot of all signals of all motors, cover and dgw taken.
+    fn start(&mut self, ram: &[u8; 128], g: &mut Global, motors: &[Motor; 3], cur: &[CurrentScale; 3]) {
+        let pol = Polarity {
+            ph_ab: g.g(f::POL_PH_AB) != 0,
+            fd_ab: g.g(f::POL_FD_AB) != 0,
+            dac_ab: g.g(f::POL_DAC_AB) != 0,
+        };
+        for m in 0..3 {
+            let mo = &motors[m];
+            let step = self.stepped[m] || mo.step;
+            self.snap[m] = microstep::signals(ram, mo.ustep, cur[m].i_scale(mo), mo.dir, step, pol);
+            self.stepped[m] = false;
+        }
+        self.cover_busy = g.cw;
+        g.cw = false;
+        self.cov_pos = g.cover_pos & 63;
+        self.cov_len = g.cover_len.min(24);
+        self.cov_data = g.cover_datagram & 0xFF_FFFF;
+        self.dgw_busy = g.dgw;
+        g.dgw = false;
+        self.req = false;
+        self.cell = 0;
+        self.motor = 0;
+        self.bits = 0;
+        self.cs = true;
+        self.sck = true;
+        self.state = SETUP;
+        self.cnt = timing(g.g(f::CLK2_DIV)).2;
+    }
+
+    /// Falling SCK_S: the bit of the current cell goes out on SDO_S (C84, C85).
+    #[inline]
+    fn next_bit(&mut self, ram: &[u8; 128], g: &Global) {
+        let code = ram[self.cell as usize & 63] & 0x1F;
+        let m = (self.motor as usize).min(2);
+        let mut b = (self.snap[m] >> code) & 1 != 0;
+        if self.cover_busy && self.bits >= self.cov_pos && self.bits < self.cov_pos + self.cov_len {
+            let i = self.cov_len - 1 - (self.bits - self.cov_pos);
+            b = (self.cov_data >> i) & 1 != 0;
+        }
+        self.sdo = b;
+        self.sck = false;
+        self.state = LOW;
+        self.cnt = timing(g.g(f::CLK2_DIV)).0;
+    }
+
+    /// Leaving SPI mode (en_sd := 1, C89): back to IDLE; a cover or readback request in
+    /// progress stays waiting.
+    fn abort(&mut self, g: &mut Global) {
+        g.cw |= self.cover_busy;
+        g.dgw |= self.dgw_busy;
+        let cupd = self.cupd;
+        *self = Chain::reset();
+        self.cupd = cupd;
+    }
+
+    /// cw as read back and in CDGW: waiting or being sent.
+    #[inline]
+    pub fn cw(&self, g: &Global) -> bool {
+        g.cw || self.cover_busy
+    }
+
+    /// CDGW status bit (C88): cw OR the datagram-word handshake.
+    #[inline]
+    pub fn cdgw(&self, g: &Global) -> bool {
+        g.cw || g.dgw || self.cover_busy || self.dgw_busy
+    }
+
+    /// Pin levels (nSCS_S, nSCS2, nSCS3, SCK_S, SDO_S) with the polarities of the global
+    /// parameter register (C81).
+    #[inline]
+    pub fn pins(&self, g: &Global) -> (bool, bool, bool, bool, bool) {
+        let sck = self.sck ^ (g.g(f::POL_SCK_S) != 0);
+        if g.g(f::CS_COM_IND) != 0 {
+            // Individual selects, always low active, one per motor (C81).
+            let m = self.motor;
+            (!(self.cs && m == 0), !(self.cs && m == 1), !(self.cs && m >= 2), sck, self.sdo)
+        } else {
+            let ncs = !self.cs ^ (g.g(f::POL_NSCS_S) != 0);
+            (ncs, true, true, sck, self.sdo)
+        }
+    }
+}

@@ -1,0 +1,54 @@
+//! Current scaling: selection of is_agtat / is_aleat / is_v0 (TMC428 §8.9 Table 8-2,
+//! TMC429 §8.1.9) with the is_v0 delay of 255 ramp ticks at rest (contract C75–C77).
+//! The DAC values are scaled by [`crate::microstep::scale`] (Table 8-1).
+
+use crate::motor::Motor;
+
+/// Which scale factor is selected.
+pub const SEL_ALEAT: u8 = 0;
+pub const SEL_AGTAT: u8 = 1;
+pub const SEL_V0: u8 = 2;
+
+/// Ramp ticks at rest before is_v0 is selected (TMC428 §8.9: t = 255·32·2^ramp_div / fCLK).
+pub const V0_DELAY_TICKS: u8 = 255;
+
+/// Per-motor state of the current-scale selector.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CurrentScale {
+    /// Ramp ticks counted with V = 0 (saturates at 255; cleared in every cycle with V ≠ 0).
+    pub v0_count: u8,
+    /// Selected factor: [`SEL_ALEAT`], [`SEL_AGTAT`] or [`SEL_V0`].
+    pub sel: u8,
+}
+
+impl CurrentScale {
+    /// One CLK edge from the motor's old state; `ramp_tick` = the motor has a ramp tick in this
+    /// cycle (contract C40). (C75, C77)
+    #[inline]
+    pub fn tick(&mut self, m: &Motor, ramp_tick: bool) {
+        if m.v != 0 {
+            self.v0_count = 0;
+            // Table 8-2: a_threshold > 1023 always selects is_aleat.
+            let agt = m.a_threshold <= 1023 && m.a_actual.unsigned_abs() > m.a_threshold as u32;
+            self.sel = if agt { SEL_AGTAT } else { SEL_ALEAT };
+        } else {
+            if ramp_tick && self.v0_count < V0_DELAY_TICKS {
+                self.v0_count += 1;
+            }
+            if self.v0_count == V0_DELAY_TICKS {
+                self.sel = SEL_V0;
+            }
+            // During the delay the previous selection is kept (C75).
+        }
+    }
+
+    /// i_scale of the motor's registers for the current selection.
+    #[inline]
+    pub fn i_scale(&self, m: &Motor) -> u8 {
+        match self.sel {
+            SEL_AGTAT => m.is_agtat,
+            SEL_V0 => m.is_v0,
+            _ => m.is_aleat,
+        }
+    }
+}

@@ -1,0 +1,120 @@
+//! Microstep unit: the 256-entry full-wave index expanded through the quarter-wave LUT to the
+//! sine (coil A) and cosine (coil B) DAC values, phase and fast-decay bits, and the primary
+//! signal vector of one motor (TMC428 §11 Table 11-1, §12 Tables 12-3/12-4; TMC429 §11.5;
+//! contract C70–C74).
+//!
+//! Everything here is combinational: the driver chain evaluates it once per motor at the
+//! start of a datagram (contract C80) and keeps the result in its snapshot register.
+
+/// Primary signal codes (TMC428 Table 11-1).
+pub const DAC_A_0: u8 = 0x00;
+pub const PH_A: u8 = 0x06;
+pub const FD_A: u8 = 0x07;
+pub const DAC_B_0: u8 = 0x08;
+pub const PH_B: u8 = 0x0E;
+pub const FD_B: u8 = 0x0F;
+pub const ZERO: u8 = 0x10;
+pub const ONE: u8 = 0x11;
+pub const DIRECTION: u8 = 0x12;
+pub const STEP: u8 = 0x13;
+
+/// Bits of the codes $14–$1F of a signal vector: unused codes read 1 (contract C74).
+pub const UNUSED_CODES: u32 = 0xFFF0_0000;
+
+/// First LUT cell of the RAM (TMC428 Table 10-1).
+pub const LUT_BASE: usize = 64;
+
+/// LUT indices of coil A (sine) and coil B (cosine) for full-wave index `w` (contract C71):
+/// quadrant q = w[7:6], j = w[5:0]; q even: sin j, cos min(63, 64 − j); q odd: the reverse.
+#[inline]
+pub fn lut_indices(w: u8) -> (u8, u8) {
+    let j = w & 63;
+    let mirror = (64 - j).min(63);
+    if (w >> 6) & 1 == 0 {
+        (j, mirror)
+    } else {
+        (mirror, j)
+    }
+}
+
+/// PH_A, PH_B, FD_A, FD_B of full-wave index `w` before polarities (TMC428 Table 12-3).
+#[inline]
+pub fn quadrant_bits(w: u8) -> (bool, bool, bool, bool) {
+    match w >> 6 {
+        0 => (true, true, false, true),
+        1 => (true, false, true, false),
+        2 => (false, false, false, true),
+        _ => (false, true, true, false),
+    }
+}
+
+/// DAC value scaled by i_scale (TMC428 Table 8-1; contract C76): %000 is 1, otherwise
+/// `(dac · i_scale) >> 3`.
+#[inline]
+pub fn scale(dac: u8, i_scale: u8) -> u8 {
+    let k = i_scale & 7;
+    if k == 0 {
+        dac & 63
+    } else {
+        (((dac & 63) as u16 * k as u16) >> 3) as u8
+    }
+}
+
+/// Global-register polarity bits that act on the signal vector (TMC428 §9.7).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Polarity {
+    pub ph_ab: bool,
+    pub fd_ab: bool,
+    pub dac_ab: bool,
+}
+
+/// The sequencer outputs of one motor as a 32-bit vector indexed by primary signal code
+/// (bit c = value of code c): DAC_A, PH_A, FD_A, DAC_B, PH_B, FD_B, Zero, One, Direction,
+/// Step, and 1 for the unused codes $14–$1F (contract C72–C74).
+pub fn signals(ram: &[u8; 128], w: u8, i_scale: u8, negative: bool, step: bool, pol: Polarity) -> u32 {
+    let (si, ci) = lut_indices(w);
+    let mut dac_a = scale(ram[LUT_BASE + si as usize], i_scale) as u32;
+    let mut dac_b = scale(ram[LUT_BASE + ci as usize], i_scale) as u32;
+    if pol.dac_ab {
+        dac_a ^= 63;
+        dac_b ^= 63;
+    }
+    let (ph_a, ph_b, fd_a, fd_b) = quadrant_bits(w);
+    let b = |x: bool, code: u8| (x as u32) << code;
+    (dac_a << DAC_A_0)
+        | b(ph_a ^ pol.ph_ab, PH_A)
+        | b(fd_a ^ pol.fd_ab, FD_A)
+        | (dac_b << DAC_B_0)
+        | b(ph_b ^ pol.ph_ab, PH_B)
+        | b(fd_b ^ pol.fd_ab, FD_B)
+        | b(true, ONE)
+        | b(negative, DIRECTION)
+        | b(step, STEP)
+        | UNUSED_CODES
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn indices_reproduce_table_12_4_quadrant_starts() {
+        // First sin entry of quadrant 2 is 63, of quadrant 3 is 0 (Table 12-4).
+        assert_eq!(lut_indices(64), (63, 0));
+        assert_eq!(lut_indices(65), (63, 1));
+        assert_eq!(lut_indices(66), (62, 2));
+        assert_eq!(lut_indices(128), (0, 63));
+        assert_eq!(lut_indices(192), (63, 0));
+        assert_eq!(lut_indices(0), (0, 63));
+        assert_eq!(lut_indices(1), (1, 63));
+    }
+
+    #[test]
+    fn scale_table_8_1() {
+        assert_eq!(scale(63, 0), 63);
+        assert_eq!(scale(63, 1), 7);
+        assert_eq!(scale(59, 4), 29);
+        assert_eq!(scale(24, 4), 12);
+        assert_eq!(scale(63, 7), 55);
+    }
+}
