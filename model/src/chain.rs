@@ -32,6 +32,9 @@ pub const CSOFF: u8 = 6;
 const MASK48: u64 = (1 << 48) - 1;
 /// Ramp ticks per continuous-update request of a motor: 2^(15+ramp_div) CLK / (32·2^ramp_div).
 pub const CUPD_RAMP_TICKS: u16 = 1024;
+/// Reset values of the continuous-update counters: a third of the period apart, so that
+/// motors with equal ramp_div never request in the same frame (C83).
+pub const CUPD_RESET: [u16; 3] = [0, 341, 682];
 /// The datagram bit position counter saturates here (cover positions end at 63 + 24).
 const BITS_MAX: u8 = 127;
 
@@ -105,7 +108,7 @@ impl Chain {
             cov_pos: 0,
             cov_len: 0,
             cov_data: 0,
-            cupd: [0; 3],
+            cupd: CUPD_RESET,
             cs: false,
             sck: true,
             sdo: false,

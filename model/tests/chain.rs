@@ -1,15 +1,357 @@
 //! Driver-chain SPI master at pin level (TMC428 §6.3, §9.1–§9.7, §11; spec-digest §5.2;
-//! contract C80–C89).
+//! contract C80–C89). Datagrams are decoded from nSCS_S / SCK_S / SDO_S by the EventDecoder.
 
 mod common;
 use common::*;
+use tmc429_model::regmap::{f, global_a7, motor_a7, ram_a7};
 use tmc429_model::Chip;
 
-#[test]
-fn smoke() {
+fn datagram_at(w: [u8; 3], iscale: Option<u32>) -> (u32, u64) {
     let (mut h, log) = host_with_events(Chip::Tmc429);
     load_tables(&mut h);
+    for m in 0..3u8 {
+        set_ustep(&mut h, m, w[m as usize]);
+        if let Some(s) = iscale {
+            h.write(motor_a7(m, 8), s << 20 | s << 16 | s << 12);
+        }
+    }
+    let before = chains(&log).len();
     request(&mut h);
     settle(&mut h, 10_000);
-    println!("{:X?}", chains(&log));
+    let c = chains(&log);
+    assert_eq!(c.len(), before + 1, "exactly one datagram per request");
+    let (_, n, bits) = c[c.len() - 1];
+    (n, bits)
+}
+
+/// spec-digest §5.2: Table 11-2 configuration, Table 12-2 LUT, LSMD 2.
+#[test]
+fn digest_5_2_datagrams_bit_for_bit() {
+    let cases: [([u8; 3], u64); 9] = [
+        ([0, 0, 0], 0x05F05F07F),
+        ([1, 1, 1], 0x05F05F07F),
+        ([16, 16, 16], 0x35D35D37D),
+        ([32, 0, 0], 0x5D705F07F),
+        ([64, 64, 64], 0x7C07C0FC0),
+        ([100, 0, 0], 0x55805F07F),
+        ([128, 0, 0], 0x01E05F07F),
+        ([200, 0, 0], 0x78705F07F),
+        ([255, 0, 0], 0x01F05F07F),
+    ];
+    for (w, want) in cases {
+        assert_eq!(datagram_at(w, None), (36, want), "w = {w:?}");
+    }
+    // i_scale %100 on every factor (Table 8-1: 50 %).
+    assert_eq!(datagram_at([16, 16, 16], Some(4)), (36, 0x1CF1CF1EF));
+}
+
+/// spec-digest §5.2: TMC429 power-on RAM (One at MDA/MDB), LSMD 2, w = 0.
+#[test]
+fn tmc429_power_on_configuration() {
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    h.write(GCONF, gconf(2, 15, 0));
+    request(&mut h);
+    settle(&mut h, 10_000);
+    assert_eq!(chains(&log), vec![(chains(&log)[0].0, 36, 0x87F87F87F)]);
+}
+
+fn covered(pos: u32, len: u32, data: u32) -> u64 {
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    load_tables(&mut h);
+    h.write(COVER_POS_LEN, pos << 8 | len);
+    h.write(COVER_DATAGRAM, data);
+    settle(&mut h, 10_000);
+    let c = chains(&log);
+    assert_eq!(c.len(), 1);
+    assert_eq!(c[0].1, 36);
+    c[0].2
+}
+
+/// spec-digest §5.2 cover example; C85: cover_len > 24 acts as 24, positions past the end
+/// are dropped.
+#[test]
+fn cover_datagram() {
+    assert_eq!(covered(0, 12, 0xABC), 0xABC05F07F);
+    // cover_len 0 sends the unchanged datagram (TMC428 §9.3).
+    assert_eq!(covered(0, 0, 0xFFFFFF), 0x05F05F07F);
+    // cover_len 31 → 24 bits at positions 4..27 (first bit sent = position 0 = bit 35).
+    assert_eq!(covered(4, 31, 0xFFFFFF), 0x0FFFFFF7F);
+    // positions 30..41 requested, only 30..35 exist: the 6 MSBs of the cover datagram.
+    assert_eq!(covered(30, 12, 0xA80), 0x05F05F06A);
+}
+
+/// C29 read back; C88: cw set until the covered datagram is sent.
+#[test]
+fn cover_readback_and_cw() {
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    load_tables(&mut h);
+    h.write(COVER_POS_LEN, 5 << 8 | 3);
+    assert_eq!(h.read(COVER_POS_LEN), 6 << 8 | 3);
+    h.write(COVER_DATAGRAM, 5);
+    // The datagram starts within a few CLK of the write and takes 656 CLK at clk2_div 7.
+    assert_eq!(h.read(COVER_POS_LEN) >> 23, 1);
+    assert_ne!(h.status() & 0x40, 0);
+    settle(&mut h, 10_000);
+    assert_eq!(chains(&log).len(), 1);
+    assert_eq!(h.read(COVER_POS_LEN), 6 << 8 | 3);
+    assert_eq!(h.status() & 0x40, 0);
+}
+
+/// TMC428 §9.1, spec-digest §5.2: the 48-bit readback holds what SDI_S returned; C88: CDGW
+/// stays set after a datagram_low_word write until a datagram completes.
+#[test]
+fn readback_and_cdgw() {
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    load_tables(&mut h);
+    h.write(global_a7(0), 0);
+    h.wait(5000);
+    assert_eq!(chains(&log).len(), 0);
+    assert_ne!(h.status() & 0x40, 0, "CDGW armed by the datagram_low_word write");
+    let (s1, s2, s3) = (0xA5Cu64, 0x3C1u64, 0x7E2u64);
+    request(&mut h);
+    run_board(&mut h, 2000, [false; 3], [false; 3], s1 << 24 | s2 << 12 | s3, 36);
+    assert_eq!(chains(&log).len(), 1);
+    assert_eq!(h.status() & 0x40, 0, "CDGW clear after the datagram");
+    assert_eq!(h.read(global_a7(1)), s1 as u32);
+    assert_eq!(h.read(global_a7(0)), (s2 << 12 | s3) as u32);
+    // A second datagram shifts 36 more bits: the high word keeps the last 48 bits.
+    request(&mut h);
+    run_board(&mut h, 2000, [false; 3], [false; 3], 0xFFF_000_FFF, 36);
+    assert_eq!(h.read(global_a7(1)), (s3 << 12 | 0xFFF) as u32);
+    assert_eq!(h.read(global_a7(0)), 0x000FFF);
+}
+
+/// C88: CDGW is set while a datagram is under way after the write and clears at its end.
+#[test]
+fn cdgw_during_datagram() {
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    load_tables(&mut h);
+    h.write(global_a7(1), 0);
+    request(&mut h);
+    let mut seen = Vec::new();
+    for _ in 0..20 {
+        let c0 = h.cycle();
+        let st = h.status();
+        seen.push((c0, st & 0x40 != 0));
+    }
+    let end = chains(&log)[0].0;
+    // The status byte is taken 2–3 edges after nSCS_C is applied low (C4, C10).
+    let mut both = [false; 2];
+    for (c, cdgw) in seen {
+        if c + 3 < end || c > end {
+            assert_eq!(cdgw, c < end, "status frame from cycle {c}, datagram ended at {end}");
+            both[cdgw as usize] = true;
+        }
+    }
+    assert_eq!(both, [true, true]);
+}
+
+/// TMC428 §9.7 / Table 6-2, C81: SCK_S period 2·(clk2_div+1), low half clk2_div+1; below 7
+/// the period stays 16 CLK with the low half clk2_div+1.
+#[test]
+fn sck_period() {
+    for c in [0u32, 3, 6, 7, 8, 15, 100, 255] {
+        let (mut h, trace) = host_with_trace(Chip::Tmc429);
+        load_tables(&mut h);
+        h.write(GCONF, gconf(2, c, 0));
+        trace.borrow_mut().clear();
+        request(&mut h);
+        h.wait(45 * 2 * 256);
+        let t = trace.borrow();
+        let lows = pulses(&t, |o| !o.sck_s);
+        assert_eq!(lows.len(), 36, "clk2_div {c}");
+        let lo = c as u64 + 1;
+        let period = (2 * lo).max(16);
+        assert!(lows.iter().all(|&(_, l)| l == lo), "clk2_div {c}: low half");
+        // Within a motor's 12 bits the falling edges are one period apart.
+        for w in lows[..12].windows(2) {
+            assert_eq!(w[1].0 - w[0].0, period, "clk2_div {c}");
+        }
+        // NxM processing: 1 period (clk2_div ≤ 7) or 1.5 periods (> 7) without a clock.
+        let nxm = lows[12].0 - lows[11].0 - period;
+        assert_eq!(nxm, if c <= 7 { period } else { 3 * lo }, "clk2_div {c}");
+    }
+}
+
+/// Table 6-2: a 1-bit datagram at clk2_div 7 keeps the chip select active 8+8+16+8+8 = 48 CLK;
+/// 64 bits at clk2_div 255: 512 + 64·512 + 512 = 33792 CLK.
+#[test]
+fn datagram_length_limits() {
+    let (mut h, trace) = host_with_trace(Chip::Tmc428);
+    h.datagram(0x80000031); // cell 0: One with NxM
+    h.write(GCONF, gconf(0, 7, 0));
+    trace.borrow_mut().clear();
+    request(&mut h);
+    h.wait(200);
+    assert_eq!(pulses(&trace.borrow(), |o| !o.nscs_s), vec![(pulses(&trace.borrow(), |o| !o.nscs_s)[0].0, 48)]);
+
+    let (mut h, trace) = host_with_trace(Chip::Tmc428);
+    for a in 0..32u8 {
+        let odd = if a == 31 { 0x31 } else { 0x11 };
+        h.write(ram_a7(a), odd << 8 | 0x10);
+    }
+    h.write(GCONF, gconf(0, 255, 0));
+    trace.borrow_mut().clear();
+    request(&mut h);
+    h.wait(35_000);
+    let p = pulses(&trace.borrow(), |o| !o.nscs_s);
+    assert_eq!(p.len(), 1);
+    assert_eq!(p[0].1, 33792);
+}
+
+/// TMC428 §9.7: back-to-back datagrams of the 3×12 chain come every (1 + 39 + 1) SCK periods
+/// at clk2_div 7 (f_SCK/41), every 42 periods at clk2_div 15 (NxM 1.5 periods).
+#[test]
+fn datagram_rate_when_busy() {
+    for (c, periods) in [(7u32, 41u64), (15, 42)] {
+        let (mut h, log) = host_with_events(Chip::Tmc429);
+        load_tables(&mut h);
+        h.write(GCONF, gconf(2, c, 0));
+        h.write(motor_a7(0, 10), 3); // HOLD
+        h.write(motor_a7(0, 5), 2047); // a step every ~32 CLK keeps a request pending
+        h.wait(20_000);
+        let cy: Vec<u64> = chains(&log).iter().map(|e| e.0).collect();
+        assert!(cy.len() > 10);
+        for w in cy[2..].windows(2) {
+            assert_eq!(w[1] - w[0], periods * 2 * (c as u64 + 1), "clk2_div {c}");
+        }
+    }
+}
+
+/// TMC428 §9.7: f_cupd = fCLK·Σ 2^−ramp_div / 32768 (C83).
+#[test]
+fn continuous_update_rate() {
+    for (rd, window, want) in [([0u32, 0, 0], 1u64 << 20, 96usize), ([0, 3, 5], 1 << 20, 37), ([7, 7, 7], 1 << 23, 6)] {
+        let (mut h, log) = host_with_events(Chip::Tmc429);
+        h.write(GCONF, gconf(0, 7, f::CONT_UPDATE.put(1)));
+        for m in 0..3u8 {
+            h.write(motor_a7(m, 12), rd[m as usize] << 8);
+        }
+        let t0 = h.cycle() + (1 << 23);
+        h.wait(t0 - h.cycle());
+        log.borrow_mut().clear();
+        h.wait(window);
+        assert_eq!(chains(&log).len(), want, "ramp_div {rd:?}");
+    }
+}
+
+/// Bad configuration: no NxM bit anywhere — endless transmission (TMC428 §11), never a panic;
+/// writing an NxM bit ends it (the RAM is read while sending, C84).
+#[test]
+fn no_nxm_sends_endlessly() {
+    let (mut h, log) = host_with_events(Chip::Tmc428);
+    h.write(GCONF, gconf(0, 7, 0));
+    request(&mut h);
+    h.wait(100_000);
+    assert!(chains(&log).is_empty());
+    assert!(!h.outputs().nscs_s, "chip select still active");
+    assert_ne!(h.status() & 0x40, 0, "cover still being sent");
+    h.write(ram_a7(5), 0x20 << 8); // cell 11: NxM
+    h.wait(2_000);
+    let c = chains(&log);
+    assert_eq!(c.len(), 1);
+    assert_eq!(h.status() & 0x40, 0);
+}
+
+/// C86: LSMD 3 acts as 2; C74: codes $14–$1F read 1, $10 = 0, $11 = 1.
+#[test]
+fn lsmd3_and_unused_codes() {
+    assert_eq!(
+        {
+            let (mut h, log) = host_with_events(Chip::Tmc429);
+            load_tables(&mut h);
+            h.write(GCONF, gconf(3, 7, 0));
+            request(&mut h);
+            settle(&mut h, 10_000);
+            chains(&log)
+        }
+        .iter()
+        .map(|e| (e.1, e.2))
+        .collect::<Vec<_>>(),
+        vec![(36, 0x05F05F07F)]
+    );
+    let (mut h, log) = host_with_events(Chip::Tmc428);
+    // Cells 0..13: $10 $11 $14 … $1F, the last with NxM.
+    let codes: Vec<u8> = [0x10u8, 0x11].into_iter().chain(0x14..=0x1F).collect();
+    for (a, pair) in codes.chunks(2).enumerate() {
+        let odd = if a == codes.len() / 2 - 1 { pair[1] | 0x20 } else { pair[1] };
+        h.write(ram_a7(a as u8), (odd as u32) << 8 | pair[0] as u32);
+    }
+    h.write(GCONF, gconf(0, 7, 0));
+    request(&mut h);
+    settle(&mut h, 10_000);
+    assert_eq!(chains(&log).iter().map(|e| (e.1, e.2)).collect::<Vec<_>>(), vec![(14, 0x1FFF)]);
+}
+
+/// TMC428 §9.7 polarity bits (C81).
+#[test]
+fn polarities() {
+    let (mut h, trace) = host_with_trace(Chip::Tmc429);
+    load_tables(&mut h);
+    let pol = f::POL_PH_AB.put(1) | f::POL_FD_AB.put(1) | f::POL_DAC_AB.put(1);
+    h.write(GCONF, gconf(2, 7, pol | f::POL_NSCS_S.put(1) | f::POL_SCK_S.put(1)));
+    assert!(!h.outputs().nscs_s && !h.outputs().sck_s, "idle: CS low (high active), SCK low");
+    trace.borrow_mut().clear();
+    request(&mut h);
+    h.wait(1000);
+    let t = trace.borrow();
+    let cs = pulses(&t, |o| o.nscs_s);
+    assert_eq!(cs.len(), 1);
+    // Sample SDO_S at the inverted clock's falling edges (the driver's rising SCK).
+    let mut bits = 0u64;
+    let mut n = 0;
+    for w in t.windows(2) {
+        if w[0].1.sck_s && !w[1].1.sck_s && w[0].1.nscs_s {
+            bits = bits << 1 | w[0].1.sdo_s as u64;
+            n += 1;
+        }
+    }
+    // w = 0: DAC_A 0→63, DAC_B 63→0, PH 1→0, FD_A 0→1, FD_B 1→0.
+    assert_eq!((n, bits), (36, 0x780780F80));
+}
+
+/// TMC428 §9.7 csCommonIndividual: nSCS_S, nSCS2, nSCS3 select the drivers of motors 1, 2, 3.
+#[test]
+fn individual_chip_selects() {
+    let (mut h, trace) = host_with_trace(Chip::Tmc429);
+    load_tables(&mut h);
+    h.write(GCONF, gconf(2, 7, f::CS_COM_IND.put(1)));
+    trace.borrow_mut().clear();
+    request(&mut h);
+    h.wait(1000);
+    let t = trace.borrow();
+    let rising_while = |sel: &dyn Fn(&tmc429_model::Outputs) -> bool| {
+        t.windows(2).filter(|w| !w[0].1.sck_s && w[1].1.sck_s && sel(&w[0].1)).count()
+    };
+    assert_eq!(rising_while(&|o| !o.nscs_s && o.nscs2 && o.nscs3), 12);
+    assert_eq!(rising_while(&|o| o.nscs_s && !o.nscs2 && o.nscs3), 12);
+    assert_eq!(rising_while(&|o| o.nscs_s && o.nscs2 && !o.nscs3), 12);
+    for sel in [|o: &tmc429_model::Outputs| !o.nscs_s, |o: &tmc429_model::Outputs| !o.nscs2, |o: &tmc429_model::Outputs| !o.nscs3] {
+        assert_eq!(pulses(&t, sel).len(), 1);
+    }
+}
+
+/// TMC428 §9.6–§9.7, Table 9-3 with refmux = 1 and a 74HC157 on nSCS_S (C87): left switches
+/// sampled while nSCS_S is high, right while low; updated only by datagrams.
+#[test]
+fn refmux_sampling() {
+    let (mut h, _log) = host_with_events(Chip::Tmc429);
+    load_tables(&mut h);
+    h.write(GCONF, gconf(2, 7, f::REFMUX.put(1)));
+    let left = [true, false, true];
+    let right = [false, true, true];
+    {
+        let p = h.pins_mut();
+        p.ref1 = left[0];
+        p.ref2 = left[1];
+        p.ref3 = left[2];
+    }
+    h.wait(10);
+    assert_eq!(h.read(global_a7(14)), 0, "nothing sampled before a datagram");
+    request(&mut h);
+    run_board(&mut h, 1000, left, right, 0, 0);
+    // r1 0, l1 1, r2 2, l2 3, r3 4, l3 5.
+    assert_eq!(h.read(global_a7(14)), 0b11_0100 | 0b00_0010 | 0b01_0000);
+    // RS bits of the status follow the left switches (C60).
+    assert_eq!(h.status() & 0x2A, 0b10_0010);
 }

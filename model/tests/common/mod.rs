@@ -99,3 +99,58 @@ pub fn settle(h: &mut Host, max: u64) {
 pub fn ram_word(a: u8) -> u8 {
     ram_a7(a)
 }
+
+/// A host that records the outputs after every edge: `trace[i]` = (cycle, outputs).
+pub fn host_with_trace(chip: Chip) -> (Host, Rc<RefCell<Vec<(u64, Outputs)>>>) {
+    let mut h = Host::new(chip);
+    let log = Rc::new(RefCell::new(Vec::new()));
+    let l2 = log.clone();
+    h.set_observer(Box::new(move |c, _i, o| l2.borrow_mut().push((c.cycle(), *o))));
+    (h, log)
+}
+
+/// Intervals (start cycle, length) during which `level(outputs)` is true.
+pub fn pulses(trace: &[(u64, Outputs)], level: impl Fn(&Outputs) -> bool) -> Vec<(u64, u64)> {
+    let mut v = Vec::new();
+    let mut start = None;
+    for &(c, o) in trace {
+        match (level(&o), start) {
+            (true, None) => start = Some(c),
+            (false, Some(s)) => {
+                v.push((s, c - s));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    v
+}
+
+/// Runs `cycles` edges emulating a 74HC157 on nSCS_S: REFn = left[n] while nSCS_S is high,
+/// right[n] while low; and a driver chain returning `ret` (MSB first, `nret` bits) on SDI_S,
+/// one bit per falling SCK_S edge while a chip select is active (SPI mode 3).
+pub fn run_board(h: &mut Host, cycles: u64, left: [bool; 3], right: [bool; 3], ret: u64, nret: u32) {
+    let mut k = 0u32;
+    let mut prev = h.outputs();
+    for _ in 0..cycles {
+        let o = h.outputs();
+        let cs = !o.nscs_s || !o.nscs2 || !o.nscs3;
+        let prev_cs = !prev.nscs_s || !prev.nscs2 || !prev.nscs3;
+        if cs && !prev_cs {
+            k = 0;
+        }
+        if cs && prev.sck_s && !o.sck_s {
+            k += 1;
+        }
+        // SPI mode 3: bit i goes out at the (i+1)-th falling edge, sampled at the next rising one.
+        let bit = if k >= 1 && k <= nret { (ret >> (nret - k)) & 1 != 0 } else { false };
+        let sel = if o.nscs_s { left } else { right };
+        let p = h.pins_mut();
+        p.ref1 = sel[0];
+        p.ref2 = sel[1];
+        p.ref3 = sel[2];
+        p.sdi_s = bit;
+        prev = o;
+        h.wait(1);
+    }
+}
