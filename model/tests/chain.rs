@@ -1,8 +1,8 @@
 //! Driver-chain SPI master at pin level (TMC428 §6.3, §9.1–§9.7, §11; spec-digest §5.2;
 //! contract C80–C89). Datagrams are decoded from nSCS_S / SCK_S / SDO_S by the EventDecoder.
 
-mod common;
-use common::*;
+mod drv;
+use drv::*;
 use tmc429_model::regmap::{f, global_a7, motor_a7, ram_a7};
 use tmc429_model::Chip;
 
