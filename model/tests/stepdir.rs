@@ -1,0 +1,175 @@
+//! Step/Dir output at pin level (TMC429 §10, §8.2.4; TMC4210; contract C90–C96).
+
+mod drv;
+use drv::*;
+use tmc429_model::regmap::{f, global_a7, motor_a7};
+use tmc429_model::{Chip, Outputs};
+
+fn sd_host(chip: Chip, stpdiv: u32, ifc: u32) -> (tmc429_model::host::Host, std::rc::Rc<std::cell::RefCell<Vec<(u64, Outputs)>>>) {
+    let (mut h, t) = host_with_trace(chip);
+    h.write(GCONF, gconf(0, stpdiv, 0));
+    h.write(IF_CONF, f::EN_SD.put(1) | ifc);
+    t.borrow_mut().clear();
+    (h, t)
+}
+
+fn hold_velocity(h: &mut tmc429_model::host::Host, m: u8, v: i32) {
+    h.write(motor_a7(m, 10), 3);
+    h.write(motor_a7(m, 5), (v as u32) & 0xFFF);
+}
+
+/// TMC429 §10.1: t_STEP = 16·(1 + STPDIV) CLK; the pulse count equals the steps made.
+#[test]
+fn pulse_length() {
+    for s in [0u32, 3, 15] {
+        let (mut h, t) = sd_host(Chip::Tmc429, s, 0);
+        assert!(!h.outputs().sdo_s, "STEP inactive low");
+        hold_velocity(&mut h, 0, 20);
+        h.wait(40_000);
+        hold_velocity(&mut h, 0, 0);
+        h.wait(3_000);
+        let x = h.read(motor_a7(0, 1));
+        let p = pulses(&t.borrow(), |o| o.sdo_s);
+        assert!(x > 5);
+        assert_eq!(p.len() as u32, x, "STPDIV {s}");
+        assert!(p.iter().all(|&(_, l)| l == 16 * (1 + s as u64)), "STPDIV {s}: {:?}", &p[..3]);
+        assert!(t.borrow().iter().all(|(_, o)| !o.sck_s), "DIR low for positive steps");
+    }
+}
+
+/// At v = 2047, pulse_div = 0, STPDIV 0: never more than one step per 32 CLK, none lost.
+#[test]
+fn max_rate() {
+    let (mut h, t) = sd_host(Chip::Tmc429, 0, 0);
+    hold_velocity(&mut h, 0, 2047);
+    h.wait(100_000);
+    hold_velocity(&mut h, 0, 0);
+    h.wait(1_000);
+    let x = h.read(motor_a7(0, 1));
+    let p = pulses(&t.borrow(), |o| o.sdo_s);
+    assert_eq!(p.len() as u32, x);
+    assert!(x > 3000);
+    for w in p.windows(2) {
+        assert!(w[1].0 - w[0].0 >= 32);
+    }
+    assert!(p.iter().all(|&(_, l)| l == 16));
+}
+
+/// step_half: STEP toggles once per step (TMC429 §8.2.4).
+#[test]
+fn step_half_toggles() {
+    let (mut h, t) = sd_host(Chip::Tmc429, 2, f::STEP_HALF.put(1));
+    hold_velocity(&mut h, 0, 30);
+    h.wait(30_000);
+    hold_velocity(&mut h, 0, 0);
+    h.wait(1_000);
+    let x = h.read(motor_a7(0, 1));
+    let tr = t.borrow();
+    let toggles = tr.windows(2).filter(|w| w[0].1.sdo_s != w[1].1.sdo_s).count();
+    assert!(x > 5);
+    assert_eq!(toggles as u32, x);
+}
+
+/// inv_stp / inv_dir invert the pins; DIR = 1 for negative steps (code $12), inverted → 0.
+#[test]
+fn inverted_polarities() {
+    let (mut h, t) = sd_host(Chip::Tmc429, 1, f::INV_STP.put(1) | f::INV_DIR.put(1));
+    assert!(h.outputs().sdo_s, "inverted STEP idles high");
+    hold_velocity(&mut h, 0, -40);
+    h.wait(20_000);
+    let tr = t.borrow();
+    let p = pulses(&tr, |o| !o.sdo_s);
+    assert!(p.len() > 5);
+    assert!(p.iter().all(|&(_, l)| l == 32));
+    // DIR (SCK_S) = negative XOR inv_dir = 0 from the first pulse on.
+    let first = p[0].0;
+    assert!(tr.iter().filter(|(c, _)| *c >= first).all(|(_, o)| !o.sck_s));
+}
+
+/// TMC429 §10.1: the first step after a direction change follows the DIR edge by t_DIR2STP = t_STEP.
+#[test]
+fn direction_to_step_delay() {
+    let (mut h, t) = sd_host(Chip::Tmc429, 4, 0);
+    hold_velocity(&mut h, 0, 50);
+    h.wait(20_000);
+    hold_velocity(&mut h, 0, -50);
+    h.wait(20_000);
+    let tr = t.borrow();
+    let dir_edges: Vec<u64> = tr.windows(2).filter(|w| !w[0].1.sck_s && w[1].1.sck_s).map(|w| w[1].0).collect();
+    assert_eq!(dir_edges.len(), 1);
+    let d = dir_edges[0];
+    let next = pulses(&tr, |o| o.sdo_s).into_iter().find(|&(s, _)| s > d).unwrap();
+    assert_eq!(next.0 - d, 16 * 5);
+    // STEP was inactive while DIR changed.
+    assert!(tr.iter().filter(|(c, _)| *c + 1 >= d && *c <= d).all(|(_, o)| !o.sdo_s));
+}
+
+/// TMC429 §10: S1 = SDO_S, D1 = SCK_S, S2 = nSCS_S, D2 = SDI_S, S3 = nSCS2, D3 = nSCS3; the
+/// event decoder reports each motor's steps with their signs.
+#[test]
+fn pin_mapping_three_motors() {
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    h.write(GCONF, gconf(0, 0, 0));
+    h.write(IF_CONF, f::EN_SD.put(1));
+    assert!(h.outputs().sdi_s_oe);
+    hold_velocity(&mut h, 0, 40);
+    hold_velocity(&mut h, 1, -60);
+    hold_velocity(&mut h, 2, 80);
+    h.wait(50_000);
+    for m in 0..3u8 {
+        hold_velocity(&mut h, m, 0);
+    }
+    h.wait(1_000);
+    let st = steps(&log);
+    for m in 0..3u8 {
+        let x = tmc429_model::motor::sext24(h.read(motor_a7(m, 1)));
+        let n = st.iter().filter(|s| s.1 == m).count() as i32;
+        let neg = st.iter().filter(|s| s.1 == m && s.2).count() as i32;
+        assert!(n > 10);
+        assert_eq!(if m == 1 { -n } else { n }, x, "motor {m}");
+        assert_eq!(neg, if m == 1 { n } else { 0 });
+    }
+}
+
+/// TMC4210: STEP = SDO_S, DIR = SCK_S, logic high until en_sd = 1; only its registers answer.
+#[test]
+fn tmc4210() {
+    let (mut h, t) = host_with_trace(Chip::Tmc4210);
+    assert!(h.outputs().sdo_s && h.outputs().sck_s && h.outputs().nscs_s);
+    hold_velocity(&mut h, 0, -100);
+    h.wait(10_000);
+    assert!(t.borrow().iter().all(|(_, o)| o.sdo_s && o.sck_s), "high until configured");
+    h.write(GCONF, f::STPDIV.put(0));
+    h.write(IF_CONF, f::EN_SD.put(1));
+    t.borrow_mut().clear();
+    h.wait(10_000);
+    let tr = t.borrow();
+    let p = pulses(&tr, |o| o.sdo_s);
+    assert!(p.len() > 10);
+    assert!(p.iter().all(|&(_, l)| l == 16));
+    assert!(tr.iter().all(|(_, o)| o.nscs_s && o.nscs2 && o.nscs3 && !o.sdi_s_oe));
+    drop(tr);
+    // Registers it lacks read 0: current scaling, datagram words, cover, motor 2 and 3.
+    h.write(motor_a7(0, 8), 0x777777);
+    assert_eq!(h.read(motor_a7(0, 8)), 0);
+    for j in 0..4 {
+        h.write(global_a7(j), 0xFFFFFF);
+        assert_eq!(h.read(global_a7(j)), 0);
+    }
+    h.write(motor_a7(1, 0), 0x123);
+    assert_eq!(h.read(motor_a7(1, 0)), 0);
+    assert_eq!(h.status() & 0x40, 0, "no CDGW on the TMC4210");
+}
+
+/// Switching en_sd back to 0 returns the TMC429 pins to the idle SPI chain.
+#[test]
+fn leaving_step_dir() {
+    let (mut h, _t) = sd_host(Chip::Tmc429, 0, 0);
+    hold_velocity(&mut h, 0, 100);
+    h.wait(5_000);
+    h.write(IF_CONF, 0);
+    h.write(motor_a7(0, 5), 0);
+    h.wait(2_000);
+    let o = h.outputs();
+    assert!(o.nscs_s && o.sck_s && o.nscs2 && o.nscs3 && !o.sdi_s_oe);
+}
