@@ -53,6 +53,8 @@ pub struct EventDecoder {
     frame: Option<(u64, u32)>,
     /// Last STEP level per motor (as on the pin).
     step_level: [bool; 3],
+    /// Step/Dir mode of the previous edge (a mode change resynchronizes the levels).
+    step_dir_prev: bool,
 }
 
 impl Default for EventDecoder {
@@ -63,7 +65,7 @@ impl Default for EventDecoder {
 
 impl EventDecoder {
     pub fn new() -> Self {
-        EventDecoder { prev: None, int: false, frame: None, step_level: [false; 3] }
+        EventDecoder { prev: None, int: false, frame: None, step_level: [false; 3], step_dir_prev: false }
     }
 
     /// Decodes the edge just made (`cycle` = index of that edge) from the chip and its outputs.
@@ -77,8 +79,10 @@ impl EventDecoder {
         let step_dir = match chip.chip() {
             Chip::Tmc428 => false,
             Chip::Tmc429 => g.ifc(f::EN_SD),
-            Chip::Tmc4210 => true,
+            Chip::Tmc4210 => g.ifc(f::EN_SD),
         };
+        let mode_changed = step_dir != self.step_dir_prev;
+        self.step_dir_prev = step_dir;
         let prev = match self.prev.replace(*out) {
             Some(p) => p,
             None => {
@@ -86,6 +90,11 @@ impl EventDecoder {
                 return;
             }
         };
+        if step_dir && mode_changed {
+            self.frame = None;
+            self.step_level = step_pins(out);
+            return;
+        }
         if step_dir {
             self.frame = None;
             let lv = step_pins(out);

@@ -11,6 +11,10 @@
 use std::fmt;
 use std::io::{self, Write};
 
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use crate::events::{Event, EventDecoder};
 use crate::host::Host;
 use crate::regmap::{self, Addr};
 use crate::{Chip, Inputs};
@@ -191,6 +195,9 @@ pub struct RunOptions {
     pub timestamps: bool,
     /// Append the register name and decoded fields.
     pub decode: bool,
+    /// Interleave `chain`, `step` and `int` event lines (pin-level, [`crate::events`]) in
+    /// cycle order; a frame line's cycle is the edge at which nSCS_C rose.
+    pub events: bool,
 }
 
 /// The decoding of a datagram and its reply for humans.
@@ -218,12 +225,56 @@ pub fn decode_status(st: u8) -> String {
     format!("status ${:02X}: {}", st, if set.is_empty() { "-".to_string() } else { set.join(" ") })
 }
 
-/// Runs a parsed script, writing one line per frame.
+/// Writes the queued events with a cycle ≤ `upto` (all with `None`).
+fn flush_events(queue: &Rc<RefCell<Vec<Event>>>, upto: Option<u64>, out: &mut dyn Write) -> io::Result<()> {
+    let mut q = queue.borrow_mut();
+    let n = match upto {
+        Some(c) => q.iter().take_while(|e| e.cycle() <= c).count(),
+        None => q.len(),
+    };
+    for e in q.drain(..n) {
+        writeln!(out, "{e}")?;
+    }
+    Ok(())
+}
+
+/// Runs a parsed script, writing one line per frame (and, with `events`, one per event).
 pub fn run(host: &mut Host, script: &[Line], opts: RunOptions, out: &mut dyn Write) -> io::Result<()> {
+    let queue: Rc<RefCell<Vec<Event>>> = Rc::new(RefCell::new(Vec::new()));
+    let saved = if opts.events {
+        let q = queue.clone();
+        let mut dec = EventDecoder::new();
+        let prev = host.take_observer();
+        host.set_observer(Box::new(move |c, _i, o| {
+            dec.observe(c, o, c.cycle(), &mut |e| q.borrow_mut().push(e));
+        }));
+        Some(prev)
+    } else {
+        None
+    };
+    let r = run_lines(host, script, opts, &queue, out);
+    if let Some(prev) = saved {
+        host.take_observer();
+        if let Some(p) = prev {
+            host.set_observer(p);
+        }
+    }
+    r?;
+    flush_events(&queue, None, out)
+}
+
+fn run_lines(
+    host: &mut Host,
+    script: &[Line],
+    opts: RunOptions,
+    queue: &Rc<RefCell<Vec<Event>>>,
+    out: &mut dyn Write,
+) -> io::Result<()> {
     for l in script {
         match &l.command {
             Command::Datagram(d) => {
                 let r = host.datagram(*d);
+                flush_events(queue, Some(host.last_frame_end()), out)?;
                 let mut s = String::new();
                 if opts.timestamps {
                     s += &format!("{} ", host.last_frame_end());
@@ -237,6 +288,7 @@ pub fn run(host: &mut Host, script: &[Line], opts: RunOptions, out: &mut dyn Wri
             }
             Command::Bits { n, value } => {
                 let r = host.frame(*value, *n);
+                flush_events(queue, Some(host.last_frame_end()), out)?;
                 let digits = n.div_ceil(4) as usize;
                 let mut s = String::new();
                 if opts.timestamps {
@@ -251,7 +303,10 @@ pub fn run(host: &mut Host, script: &[Line], opts: RunOptions, out: &mut dyn Wri
                 }
                 writeln!(out, "{s}")?;
             }
-            Command::Wait(c) => host.wait(*c),
+            Command::Wait(c) => {
+                host.wait(*c);
+                flush_events(queue, Some(host.cycle()), out)?;
+            }
             Command::Pins(set) => {
                 for (p, v) in set {
                     p.set(host.pins_mut(), *v);

@@ -24,6 +24,10 @@ pub struct Args {
     /// Add the register name and its decoded fields.
     #[arg(long)]
     pub decode: bool,
+    /// Also print pin-level events in cycle order: `chain <cycle> <nbits> <hex>`,
+    /// `step <cycle> <motor> <+|->`, `int <cycle> <0|1>`.
+    #[arg(long)]
+    pub events: bool,
 }
 
 pub fn run(a: Args) -> Result<Outcome, UserError> {
@@ -32,7 +36,7 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
         .map_err(|errs| UserError(errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n")))?;
     let mut host = Host::new(a.chip.chip);
     host.set_sck_half(a.sck_half).map_err(|e| UserError(format!("--sck-half: {e}")))?;
-    let opts = RunOptions { timestamps: a.timestamps, decode: a.decode };
+    let opts = RunOptions { timestamps: a.timestamps, decode: a.decode, events: a.events };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     match script::run(&mut host, &lines, opts, &mut out).and_then(|_| out.flush()) {
