@@ -66,8 +66,8 @@ pub struct Chain {
     pub bits: u8,
     /// A request arrived and no datagram has started since (requests collapse).
     pub req: bool,
-    /// A step of the motor since its last snapshot (code $13, C84).
-    pub stepped: [bool; 3],
+    /// Bit m: a step of motor m since its last snapshot (code $13, C84).
+    pub stepped: u8,
     /// Signal vectors of the three motors taken at the start of the datagram (C80).
     pub snap: [u32; 3],
     /// The datagram in progress carries the cover datagram (cw taken at its start).
@@ -101,7 +101,7 @@ impl Chain {
             motor: 0,
             bits: 0,
             req: false,
-            stepped: [false; 3],
+            stepped: 0,
             snap: [0; 3],
             cover_busy: false,
             dgw_busy: false,
@@ -117,7 +117,7 @@ impl Chain {
 
     /// One CLK edge of the SPI chain (C80–C89). `enabled`: the chip is in SPI mode (TMC428,
     /// TMC429 with en_sd = 0). `ramp_ticks`: bit m = motor m has a ramp tick this cycle.
-    /// `sdi_s`: the synchronized SDI_S (C4).
+    /// `sdi_s`: the synchronized SDI_S (C4). Returns true when a pin-relevant state changed.
     #[allow(clippy::too_many_arguments)]
     #[inline]
     pub fn tick(
@@ -129,16 +129,24 @@ impl Chain {
         cur: &[CurrentScale; 3],
         ramp_ticks: u8,
         sdi_s: bool,
-    ) {
+    ) -> bool {
         if !enabled {
-            if self.state != IDLE || self.cs || self.req || self.stepped != [false; 3] {
+            if self.state != IDLE || self.cs || self.req || self.stepped != 0 {
                 self.abort(g);
+                return true;
             }
-            return;
+            return false;
         }
         // Requests (C83): a step of any motor, cw, the continuous-update timer.
-        let steps = [motors[0].step, motors[1].step, motors[2].step];
-        let mut request = self.req || steps[0] || steps[1] || steps[2] || g.cw;
+        let steps = motors[0].step as u8 | (motors[1].step as u8) << 1 | (motors[2].step as u8) << 2;
+        // Fast path: counting down inside a state.
+        if self.cnt > 1 && ramp_ticks == 0 && self.state != IDLE {
+            self.cnt -= 1;
+            self.req |= steps != 0 || g.cw;
+            self.stepped |= steps;
+            return false;
+        }
+        let mut request = self.req || steps != 0 || g.cw;
         if ramp_ticks != 0 {
             let cont = g.g(f::CONT_UPDATE) != 0;
             for m in 0..3 {
@@ -151,9 +159,16 @@ impl Chain {
         }
 
         let mut start = false;
+        let mut changed = true;
         match self.state {
-            IDLE => start = request,
-            _ if self.cnt > 1 => self.cnt -= 1,
+            IDLE => {
+                start = request;
+                changed = start;
+            }
+            _ if self.cnt > 1 => {
+                self.cnt -= 1;
+                changed = false;
+            }
             SETUP | GAP => self.next_bit(ram, g),
             LOW => {
                 // Rising SCK_S: the driver samples SDO_S; SDI_S shifts into the readback (C87).
@@ -203,10 +218,9 @@ impl Chain {
         } else {
             // In IDLE without a start no request is pending; elsewhere requests collapse.
             self.req = request;
-            for m in 0..3 {
-                self.stepped[m] |= steps[m];
-            }
+            self.stepped |= steps;
         }
+        changed
     }
 
     /// Starts a datagram (C80): snapshot of all signals of all motors, cover and dgw taken.
@@ -218,10 +232,10 @@ impl Chain {
         };
         for m in 0..3 {
             let mo = &motors[m];
-            let step = self.stepped[m] || mo.step;
+            let step = (self.stepped >> m) & 1 != 0 || mo.step;
             self.snap[m] = microstep::signals(ram, mo.ustep, cur[m].i_scale(mo), mo.dir, step, pol);
-            self.stepped[m] = false;
         }
+        self.stepped = 0;
         self.cover_busy = g.cw;
         g.cw = false;
         self.cov_pos = g.cover_pos & 63;

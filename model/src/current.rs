@@ -22,17 +22,19 @@ pub struct CurrentScale {
 }
 
 impl CurrentScale {
-    /// One CLK edge from the motor's old state; `ramp_tick` = the motor has a ramp tick in this
-    /// cycle (contract C40). (C75, C77)
+    /// The motor's ramp tick (contract C40), from the motor's old state (C75, C77): moving
+    /// (V ≠ 0) selects is_agtat or is_aleat by |a_actual| against a_threshold and clears the
+    /// counter; at rest the counter counts ramp ticks and selects is_v0 at the 255th. Between
+    /// ramp ticks the selection holds (the current scale is a function of the ramp clock).
     #[inline]
-    pub fn tick(&mut self, m: &Motor, ramp_tick: bool) {
+    pub fn ramp_tick(&mut self, m: &Motor) {
         if m.v != 0 {
             self.v0_count = 0;
             // Table 8-2: a_threshold > 1023 always selects is_aleat.
             let agt = m.a_threshold <= 1023 && m.a_actual.unsigned_abs() > m.a_threshold as u32;
             self.sel = if agt { SEL_AGTAT } else { SEL_ALEAT };
         } else {
-            if ramp_tick && self.v0_count < V0_DELAY_TICKS {
+            if self.v0_count < V0_DELAY_TICKS {
                 self.v0_count += 1;
             }
             if self.v0_count == V0_DELAY_TICKS {

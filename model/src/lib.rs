@@ -291,8 +291,9 @@ impl Tmc429 {
         let mut events = [0u8; 3];
         let mut pc_event = false;
         let match_old = self.pos_match();
+        let mut pins_changed = exec.is_some();
         if !self.power_down {
-            self.drivers(pins);
+            pins_changed |= self.drivers(pins);
             self.motion(pins, &mut events);
             pc_event = match_old && !self.global.pc_match_prev;
             self.global.pc_match_prev = match_old;
@@ -327,7 +328,9 @@ impl Tmc429 {
             self.out.sdoz_c_oe = self.spi.active;
             self.out.poscmp = match_old;
         }
-        self.driver_pins(pins);
+        if pins_changed {
+            self.driver_pins(pins);
+        }
         self.out
     }
 
@@ -584,8 +587,9 @@ impl Tmc429 {
 
     /// One edge of the driver units, from the old state (C1, C70). Runs before the motion core
     /// mutates the motors, so every unit sees the step flags and indices of the previous edge.
+    /// Returns true when a driver-side pin may have changed.
     #[inline]
-    fn drivers(&mut self, pins: u16) {
+    fn drivers(&mut self, pins: u16) -> bool {
         let mut ramp_ticks = 0u8;
         if self.prescaler & 31 == PHASE_RAMP {
             let frame = self.prescaler >> 5;
@@ -595,16 +599,24 @@ impl Tmc429 {
             }
         }
         let spi = self.spi_mode();
+        let mut changed = false;
         if self.chip != Chip::Tmc4210 {
             let sdi = (pins >> sync::bit::SDI_S) & 1 != 0;
-            self.chain.tick(spi, &self.ram, &mut self.global, &self.motors, &self.cur, ramp_ticks, sdi);
-            for (i, (c, m)) in self.cur.iter_mut().zip(self.motors.iter()).enumerate() {
-                c.tick(m, (ramp_ticks >> i) & 1 != 0);
+            changed = self.chain.tick(spi, &self.ram, &mut self.global, &self.motors, &self.cur, ramp_ticks, sdi);
+            if ramp_ticks != 0 {
+                for i in 0..3 {
+                    if (ramp_ticks >> i) & 1 != 0 {
+                        self.cur[i].ramp_tick(&self.motors[i]);
+                    }
+                }
             }
         }
-        let n = self.motor_count();
-        let sd = self.step_dir_mode();
-        self.sd.tick(sd, n, &self.motors, self.global.g(f::CLK2_DIV), self.global.ifc(f::STEP_HALF));
+        if self.chip != Chip::Tmc428 {
+            let n = self.motor_count();
+            let sd = self.step_dir_mode();
+            changed |= self.sd.tick(self.cycle, sd, n, &self.motors, self.global.g(f::CLK2_DIV), self.global.ifc(f::STEP_HALF));
+        }
+        changed
     }
 
     /// Drives the driver-side output pins from the new state and samples the multiplexed

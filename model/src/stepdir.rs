@@ -41,6 +41,13 @@ pub struct StepDir {
     pub step: [bool; 3],
     /// DIR flop before inv_dir: 1 = negative (as code $12).
     pub dir: [bool; 3],
+    /// Bit m: motor m is not READY with an empty backlog (a model shortcut, derived state).
+    busy: u8,
+    /// Last edge at which [`StepDir::tick`] did its full work.
+    last: u64,
+    /// First edge at which some motor has something to do (model shortcut, derived state:
+    /// the minimum over busy motors of the edge at which their counter reaches 1).
+    next: u64,
 }
 
 impl StepDir {
@@ -55,21 +62,44 @@ impl StepDir {
     }
 
     /// One CLK edge for `n` motors. `enabled`: Step/Dir mode (C90); while disabled the unit is
-    /// held in its reset state and steps are not output.
+    /// held in its reset state and steps are not output. Returns true when a pin level changed.
     #[inline]
-    pub fn tick(&mut self, enabled: bool, n: usize, motors: &[Motor; 3], clk2_div: u32, step_half: bool) {
+    /// `now`: index of this edge (any monotonic edge count).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tick(&mut self, now: u64, enabled: bool, n: usize, motors: &[Motor; 3], clk2_div: u32, step_half: bool) -> bool {
         if !enabled {
-            if *self != StepDir::default() {
+            if self.busy != 0 || self.step != [false; 3] || self.dir != [false; 3] {
                 *self = StepDir::default();
+                return true;
             }
-            return;
+            return false;
         }
-        if self.quiet() && !motors.iter().take(n).any(|m| m.step) {
-            return;
+        let steps = motors[0].step as u8 | (motors[1].step as u8) << 1 | (motors[2].step as u8) << 2;
+        if steps == 0 && (self.busy == 0 || now < self.next) {
+            // Only counters run: cnt[i] is implicit until `next` (the RTL decrements it).
+            return false;
         }
+        // Bring the implicit counters up to date: cnt[i] −= (now − 1 − last) for busy motors.
+        let elapsed = now.wrapping_sub(self.last).wrapping_sub(1);
+        if elapsed != 0 {
+            for i in 0..n {
+                if self.state[i] != READY {
+                    self.cnt[i] = (self.cnt[i] as u64).saturating_sub(elapsed).max(1) as u16;
+                }
+            }
+        }
+        self.last = now;
         let t = t_step(clk2_div);
+        let (step_old, dir_old) = (self.step, self.dir);
         for i in 0..n {
             let mo = &motors[i];
+            if (self.busy | steps) >> i & 1 == 0 {
+                continue;
+            }
+            if self.state[i] != READY && self.cnt[i] > 1 && !mo.step {
+                self.cnt[i] -= 1;
+                continue;
+            }
             let inc = if mo.step {
                 if mo.dir {
                     -1
@@ -111,7 +141,19 @@ impl StepDir {
                     self.cnt[i] = t;
                 }
             }
+            let idle = self.state[i] == READY && self.backlog[i] == 0;
+            self.busy = (self.busy & !(1 << i)) | ((!idle as u8) << i);
         }
+        // Earliest edge with work: READY with a backlog → next edge; else when cnt reaches 1.
+        let mut next = u64::MAX;
+        for i in 0..n {
+            if (self.busy >> i) & 1 != 0 {
+                let due = if self.state[i] == READY { now + 1 } else { now + self.cnt[i] as u64 };
+                next = next.min(due);
+            }
+        }
+        self.next = next;
+        self.step != step_old || self.dir != dir_old
     }
 
     /// (STEP, DIR) pin levels of motor `m` with inv_stp / inv_dir (C92).
