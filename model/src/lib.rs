@@ -115,7 +115,7 @@ pub struct Tmc429 {
     pub(crate) chain: chain::Chain,
     /// Current-scale selectors (C75–C77).
     pub(crate) cur: [current::CurrentScale; 3],
-    /// Step/Dir outputs (C90–C96).
+    /// Step/Dir outputs (C91–C96).
     pub(crate) sd: stepdir::StepDir,
 }
 
@@ -570,7 +570,7 @@ impl Tmc429 {
 
 /// Driver side: microstep unit, current scaling, SPI chain and Step/Dir (C70–C99).
 impl Tmc429 {
-    /// Driver interface mode of the current state (C89, C90).
+    /// Driver interface mode of the current state (C89, C91).
     #[inline]
     fn spi_mode(&self) -> bool {
         match self.chip {
@@ -620,7 +620,7 @@ impl Tmc429 {
     }
 
     /// Drives the driver-side output pins from the new state and samples the multiplexed
-    /// reference switches on nSCS_S edges (C81, C87b, C91). `pins`: the synchronized inputs of
+    /// reference switches on nSCS_S edges (C81, C87, C91, C92). `pins`: the synchronized inputs of
     /// the old state.
     fn driver_pins(&mut self, pins: u16) {
         let g = &self.global;
@@ -666,7 +666,7 @@ impl Tmc429 {
                 self.out.nscs3 = d3;
             }
             _ => {
-                // TMC4210: STEP = SDO_S, DIR = SCK_S; logic high until en_sd = 1 (C91).
+                // TMC4210: STEP = SDO_S, DIR = SCK_S; logic high until en_sd = 1 (C92).
                 let (s, d) = if sd { self.sd.pins(0, inv_stp, inv_dir) } else { (true, true) };
                 self.out.sdo_s = s;
                 self.out.sck_s = d;

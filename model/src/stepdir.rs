@@ -1,4 +1,4 @@
-//! Step/Dir output (TMC429 §10, §8.2.4 with en_sd = 1; TMC4210; contract C90–C96).
+//! Step/Dir output (TMC429 §10, §8.2.4 with en_sd = 1; TMC4210; contract C91–C96).
 //!
 //! Per motor a small state machine with one down-counter:
 //! ```text
@@ -61,7 +61,7 @@ impl StepDir {
         self.state == [READY; 3] && self.backlog == [0; 3]
     }
 
-    /// One CLK edge for `n` motors. `enabled`: Step/Dir mode (C90); while disabled the unit is
+    /// One CLK edge for `n` motors. `enabled`: Step/Dir mode (C91); while disabled the unit is
     /// held in its reset state and steps are not output. Returns true when a pin level changed.
     #[inline]
     /// `now`: index of this edge (any monotonic edge count).
@@ -130,7 +130,7 @@ impl StepDir {
                 if backlog != 0 {
                     let neg = backlog < 0;
                     if neg != self.dir[i] {
-                        // C93: DIR changes, the step follows t_DIR2STP = t_STEP later.
+                        // C94: DIR changes, the step follows t_DIR2STP = t_STEP later.
                         self.dir[i] = neg;
                         self.state[i] = DIRSET;
                     } else {
@@ -156,7 +156,7 @@ impl StepDir {
         self.step != step_old || self.dir != dir_old
     }
 
-    /// (STEP, DIR) pin levels of motor `m` with inv_stp / inv_dir (C92).
+    /// (STEP, DIR) pin levels of motor `m` with inv_stp / inv_dir (C93).
     #[inline]
     pub fn pins(&self, m: usize, inv_stp: bool, inv_dir: bool) -> (bool, bool) {
         (self.step[m] ^ inv_stp, self.dir[m] ^ inv_dir)
