@@ -128,7 +128,8 @@ int tmc429_reset(tmc429_handle_t h);
 int tmc429_set_sck_half(tmc429_handle_t h, uint32_t clk_cycles);
 
 /* SCK_C rate in Hz: half period = ceil(fclk / (2*hz)) CLK cycles (the rate used is the one
- * asked or the next lower). 0 or above fclk/6 is TMC429_ERR_ARG. */
+ * asked or the next lower). 0, or above fclk/6 rounded up to a whole Hz (which gives 3), is
+ * TMC429_ERR_ARG. */
 int tmc429_set_sck_hz(tmc429_handle_t h, uint32_t hz);
 
 /* The SCK_C half period in use, in CLK cycles. */

@@ -315,13 +315,16 @@ pub extern "C" fn tmc429_set_sck_half(h: u64, clk_cycles: u32) -> c_int {
 }
 
 /// SCK_C frequency in Hz: the half period becomes ceil(fclk / (2·hz)) CLK cycles (the real rate
-/// is the requested one or the next lower that is a whole number of CLK cycles). A rate that
-/// needs fewer than 3 CLK per half period (above fclk/6) or 0 is `TMC429_ERR_ARG`.
+/// is the requested one or the next lower that is a whole number of CLK cycles). 0 or a rate
+/// above fclk/6 rounded up to a whole Hz (fewer than 3 CLK per half period, TMC428 Table 6-1) is
+/// `TMC429_ERR_ARG`.
 #[no_mangle]
 pub extern "C" fn tmc429_set_sck_hz(h: u64, hz: u32) -> c_int {
     guard(|| {
         with_sim(h, |s| {
-            if hz == 0 {
+            // Faster than fclk/6 would need fewer than 3 CLK per half period (TMC428 Table 6-1);
+            // fclk/6 rounded up to a whole Hz is accepted and gives 3.
+            if hz == 0 || hz as u64 > s.fclk.div_ceil(6) {
                 return Err(TMC429_ERR_ARG);
             }
             let half = s.fclk.div_ceil(2 * hz as u64);
