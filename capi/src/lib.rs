@@ -8,6 +8,7 @@
 //!   [`tmc429_strerror`] cannot fail.
 //! - Every pointer argument must be non-null (else `TMC429_ERR_NULL`), properly aligned and valid
 //!   for the documented number of elements (the C caller's side of the contract).
+//!   Functions that take raw pointers are `unsafe fn` for Rust callers for that reason.
 //! - Nothing unwinds across the boundary: every body runs under `catch_unwind`; a panic (a bug in
 //!   the model or here, never an input) returns `TMC429_ERR_INTERNAL` and retires the handle.
 //!
@@ -165,7 +166,11 @@ fn attach_decoder(host: &mut Host, queue: &Rc<RefCell<Queue>>) {
     let q = Rc::clone(queue);
     host.set_observer(Box::new(move |chip: &Tmc429, _inp, out| {
         let mut q = q.borrow_mut();
-        let Queue { dec, events, dropped } = &mut *q;
+        let Queue {
+            dec,
+            events,
+            dropped,
+        } = &mut *q;
         dec.observe(chip, out, chip.cycle(), &mut |e| {
             if events.len() < TMC429_EVENT_QUEUE_CAPACITY as usize {
                 events.push_back(e);
@@ -178,10 +183,20 @@ fn attach_decoder(host: &mut Host, queue: &Rc<RefCell<Queue>>) {
 
 impl Sim {
     fn new(chip: Chip, fclk: u64) -> Sim {
-        let queue = Rc::new(RefCell::new(Queue { dec: EventDecoder::new(), events: VecDeque::new(), dropped: 0 }));
+        let queue = Rc::new(RefCell::new(Queue {
+            dec: EventDecoder::new(),
+            events: VecDeque::new(),
+            dropped: 0,
+        }));
         let mut host = Host::new(chip);
         attach_decoder(&mut host, &queue);
-        Sim { host, fclk, us_rem: 0, queue, events_on: true }
+        Sim {
+            host,
+            fclk,
+            us_rem: 0,
+            queue,
+            events_on: true,
+        }
     }
 }
 
@@ -190,7 +205,10 @@ struct Registry {
     map: BTreeMap<u64, Arc<Mutex<Sim>>>,
 }
 
-static REGISTRY: Mutex<Registry> = Mutex::new(Registry { next: 1, map: BTreeMap::new() });
+static REGISTRY: Mutex<Registry> = Mutex::new(Registry {
+    next: 1,
+    map: BTreeMap::new(),
+});
 
 fn registry() -> std::sync::MutexGuard<'static, Registry> {
     // Nothing panics while the registry lock is held; a poisoned lock still holds a valid map.
@@ -214,13 +232,18 @@ fn with_sim<R>(h: u64, f: impl FnOnce(&mut Sim) -> Result<R, c_int>) -> Result<R
     f(&mut g)
 }
 
-fn out_ref<'a, T>(p: *mut T) -> Result<&'a mut T, c_int> {
+/// # Safety
+/// `p` is NULL or valid and aligned for one `T`.
+unsafe fn out_ref<'a, T>(p: *mut T) -> Result<&'a mut T, c_int> {
     // SAFETY: non-null checked; alignment and validity are the caller's contract (see header).
     unsafe { p.as_mut() }.ok_or(TMC429_ERR_NULL)
 }
 
 fn chip_of(variant: c_int) -> Result<Chip, c_int> {
-    u32::try_from(variant).ok().and_then(Chip::from_rtl_param).ok_or(TMC429_ERR_ARG)
+    u32::try_from(variant)
+        .ok()
+        .and_then(Chip::from_rtl_param)
+        .ok_or(TMC429_ERR_ARG)
 }
 
 fn sext24(x: u32) -> i32 {
@@ -242,7 +265,9 @@ pub extern "C" fn tmc429_strerror(code: c_int) -> *const c_char {
     let s: &'static [u8] = match code {
         TMC429_ERR_NULL => b"null pointer argument\0",
         TMC429_ERR_HANDLE => b"invalid handle (zero, never created or destroyed)\0",
-        TMC429_ERR_LENGTH => b"length out of range (SPI transfer: 1..4 bytes) or buffer too small\0",
+        TMC429_ERR_LENGTH => {
+            b"length out of range (SPI transfer: 1..4 bytes) or buffer too small\0"
+        }
         TMC429_ERR_ARG => b"argument out of range\0",
         TMC429_ERR_INTERNAL => b"internal error (handle retired)\0",
         c if c >= 0 => b"success\0",
@@ -255,8 +280,12 @@ pub extern "C" fn tmc429_strerror(code: c_int) -> *const c_char {
 /// (0 = the variant's maximum: 16 MHz TMC428, 32 MHz otherwise; more than the maximum is an
 /// error); it converts microseconds and SCK rates to CLK cycles. SCK starts at 4 CLK per half
 /// period. The event queue is on.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_create(variant: c_int, fclk_hz: u32, out: *mut u64) -> c_int {
+pub unsafe extern "C" fn tmc429_create(variant: c_int, fclk_hz: u32, out: *mut u64) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         let chip = chip_of(variant)?;
@@ -311,7 +340,14 @@ pub extern "C" fn tmc429_reset(h: u64) -> c_int {
 /// SCK_C half period in CLK cycles (at least 3, TMC428 Table 6-1).
 #[no_mangle]
 pub extern "C" fn tmc429_set_sck_half(h: u64, clk_cycles: u32) -> c_int {
-    guard(|| with_sim(h, |s| s.host.set_sck_half(clk_cycles).map(|_| TMC429_OK).map_err(|_| TMC429_ERR_ARG)))
+    guard(|| {
+        with_sim(h, |s| {
+            s.host
+                .set_sck_half(clk_cycles)
+                .map(|_| TMC429_OK)
+                .map_err(|_| TMC429_ERR_ARG)
+        })
+    })
 }
 
 /// SCK_C frequency in Hz: the half period becomes ceil(fclk / (2·hz)) CLK cycles (the real rate
@@ -332,14 +368,21 @@ pub extern "C" fn tmc429_set_sck_hz(h: u64, hz: u32) -> c_int {
             if half < MIN_SCK_HALF {
                 return Err(TMC429_ERR_ARG);
             }
-            s.host.set_sck_half(half).map(|_| TMC429_OK).map_err(|_| TMC429_ERR_ARG)
+            s.host
+                .set_sck_half(half)
+                .map(|_| TMC429_OK)
+                .map_err(|_| TMC429_ERR_ARG)
         })
     })
 }
 
 /// The SCK_C half period in CLK cycles now in use.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_get_sck_half(h: u64, out: *mut u32) -> c_int {
+pub unsafe extern "C" fn tmc429_get_sck_half(h: u64, out: *mut u32) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -353,8 +396,17 @@ pub extern "C" fn tmc429_get_sck_half(h: u64, out: *mut u32) -> c_int {
 /// high (then one more half period). `rx` receives the `len` bytes the chip sent; it may be
 /// the same buffer as `tx`. Only a 4-byte frame is a datagram the chip executes; a 1-byte frame
 /// reads the status byte (TMC429 §6.2). Time advances by `(2 + 2·8·len)` half periods.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_spi_transfer(h: u64, tx: *const u8, rx: *mut u8, len: usize) -> c_int {
+pub unsafe extern "C" fn tmc429_spi_transfer(
+    h: u64,
+    tx: *const u8,
+    rx: *mut u8,
+    len: usize,
+) -> c_int {
     guard(|| {
         if tx.is_null() || rx.is_null() {
             return Err(TMC429_ERR_NULL);
@@ -403,8 +455,12 @@ pub extern "C" fn tmc429_advance_us(h: u64, us: u64) -> c_int {
 }
 
 /// CLK edges since power-on (or the last `tmc429_reset`).
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_get_cycle(h: u64, out: *mut u64) -> c_int {
+pub unsafe extern "C" fn tmc429_get_cycle(h: u64, out: *mut u64) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -445,8 +501,12 @@ pub extern "C" fn tmc429_set_pin(h: u64, pin: c_int, level: c_int) -> c_int {
 }
 
 /// All output pins after the last CLK edge.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_get_outputs(h: u64, out: *mut tmc429_outputs_t) -> c_int {
+pub unsafe extern "C" fn tmc429_get_outputs(h: u64, out: *mut tmc429_outputs_t) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -473,8 +533,12 @@ pub extern "C" fn tmc429_get_outputs(h: u64, out: *mut tmc429_outputs_t) -> c_in
 /// Levels of the STEP and DIR pins (bit m = motor m) as the pins carry them in Step/Dir mode
 /// (TMC429 §10: STEP1..3 = SDO_S, nSCS_S, nSCS2; DIR1..3 = SCK_S, SDI_S, nSCS3). In SPI mode
 /// these are the driver-chain pins' levels.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_get_step_dir(h: u64, step: *mut u8, dir: *mut u8) -> c_int {
+pub unsafe extern "C" fn tmc429_get_step_dir(h: u64, step: *mut u8, dir: *mut u8) -> c_int {
     guard(|| {
         let step = out_ref(step)?;
         let dir = out_ref(dir)?;
@@ -488,8 +552,16 @@ pub extern "C" fn tmc429_get_step_dir(h: u64, step: *mut u8, dir: *mut u8) -> c_
 }
 
 /// Probes of motor `motor` (0..2; the TMC4210 has motor 0 only).
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_get_motor_probe(h: u64, motor: c_uint, out: *mut tmc429_motor_probe_t) -> c_int {
+pub unsafe extern "C" fn tmc429_get_motor_probe(
+    h: u64,
+    motor: c_uint,
+    out: *mut tmc429_motor_probe_t,
+) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -518,8 +590,12 @@ pub extern "C" fn tmc429_get_motor_probe(h: u64, motor: c_uint, out: *mut tmc429
 
 /// The status byte `INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1` of the current state (what the chip
 /// would send if a frame started now), without SPI traffic.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_get_status(h: u64, out: *mut u8) -> c_int {
+pub unsafe extern "C" fn tmc429_get_status(h: u64, out: *mut u8) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -553,8 +629,12 @@ pub extern "C" fn tmc429_events_enable(h: u64, on: c_int) -> c_int {
 }
 
 /// Number of events waiting in the queue.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_events_pending(h: u64, out: *mut usize) -> c_int {
+pub unsafe extern "C" fn tmc429_events_pending(h: u64, out: *mut usize) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -565,8 +645,16 @@ pub extern "C" fn tmc429_events_pending(h: u64, out: *mut usize) -> c_int {
 }
 
 /// Moves up to `cap` (≥ 1) of the oldest events into `buf`, oldest first; returns how many.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_events_drain(h: u64, buf: *mut tmc429_event_t, cap: usize) -> c_int {
+pub unsafe extern "C" fn tmc429_events_drain(
+    h: u64,
+    buf: *mut tmc429_event_t,
+    cap: usize,
+) -> c_int {
     guard(|| {
         if buf.is_null() {
             return Err(TMC429_ERR_NULL);
@@ -587,8 +675,12 @@ pub extern "C" fn tmc429_events_drain(h: u64, buf: *mut tmc429_event_t, cap: usi
 }
 
 /// Events lost because the queue held `TMC429_EVENT_QUEUE_CAPACITY` events.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_events_dropped(h: u64, out: *mut u64) -> c_int {
+pub unsafe extern "C" fn tmc429_events_dropped(h: u64, out: *mut u64) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -602,8 +694,16 @@ pub extern "C" fn tmc429_events_dropped(h: u64, out: *mut u64) -> c_int {
 /// `buf` of `cap` bytes; returns the length without the NUL. `TMC429_ERR_LENGTH` when the line
 /// and its NUL do not fit (64 bytes do for nbits ≤ 64); `TMC429_ERR_ARG` for an unknown kind,
 /// a motor above 2 or a flag (negative, level) other than 0 or 1.
+///
+/// # Safety
+/// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
+/// documented number of elements.
 #[no_mangle]
-pub extern "C" fn tmc429_event_format(ev: *const tmc429_event_t, buf: *mut c_char, cap: usize) -> c_int {
+pub unsafe extern "C" fn tmc429_event_format(
+    ev: *const tmc429_event_t,
+    buf: *mut c_char,
+    cap: usize,
+) -> c_int {
     guard(|| {
         // SAFETY: non-null checked; validity is the caller's contract.
         let ev = unsafe { ev.as_ref() }.ok_or(TMC429_ERR_NULL)?;
@@ -630,14 +730,19 @@ pub extern "C" fn tmc429_event_format(ev: *const tmc429_event_t, buf: *mut c_cha
 
 /// The C form of an event.
 pub fn to_c_event(e: &Event) -> tmc429_event_t {
-    let mut c = tmc429_event_t { cycle: e.cycle(), ..Default::default() };
+    let mut c = tmc429_event_t {
+        cycle: e.cycle(),
+        ..Default::default()
+    };
     match *e {
         Event::Chain { nbits, bits, .. } => {
             c.kind = TMC429_EVENT_CHAIN;
             c.nbits = nbits;
             c.bits = bits;
         }
-        Event::Step { motor, negative, .. } => {
+        Event::Step {
+            motor, negative, ..
+        } => {
             c.kind = TMC429_EVENT_STEP;
             c.motor = motor;
             c.negative = negative as u8;
@@ -654,11 +759,20 @@ pub fn to_c_event(e: &Event) -> tmc429_event_t {
 pub fn from_c_event(c: &tmc429_event_t) -> Result<Event, c_int> {
     let cycle = c.cycle;
     match c.kind {
-        TMC429_EVENT_CHAIN => Ok(Event::Chain { cycle, nbits: c.nbits, bits: c.bits }),
-        TMC429_EVENT_STEP if c.motor <= 2 && c.negative <= 1 => {
-            Ok(Event::Step { cycle, motor: c.motor, negative: c.negative != 0 })
-        }
-        TMC429_EVENT_INT if c.level <= 1 => Ok(Event::Int { cycle, level: c.level != 0 }),
+        TMC429_EVENT_CHAIN => Ok(Event::Chain {
+            cycle,
+            nbits: c.nbits,
+            bits: c.bits,
+        }),
+        TMC429_EVENT_STEP if c.motor <= 2 && c.negative <= 1 => Ok(Event::Step {
+            cycle,
+            motor: c.motor,
+            negative: c.negative != 0,
+        }),
+        TMC429_EVENT_INT if c.level <= 1 => Ok(Event::Int {
+            cycle,
+            level: c.level != 0,
+        }),
         _ => Err(TMC429_ERR_ARG),
     }
 }
