@@ -209,7 +209,7 @@ impl Tmc429 {
         for m in 0..3 {
             let mo = &self.motors[m];
             s |= ((mo.x_actual == mo.x_target) as u8) << (2 * m);
-            s |= (((l >> m) & 1) as u8) << (2 * m + 1);
+            s |= ((l >> m) & 1) << (2 * m + 1);
         }
         s | (self.cdgw() as u8) << 6 | (self.int() as u8) << 7
     }
@@ -402,8 +402,9 @@ impl Tmc429 {
             let sel = if rnl { r } else { l };
             let moving_neg = m.v < 0 || (m.v == 0 && m.vt < 0);
             let moving_pos = m.v > 0 || (m.v == 0 && m.vt > 0);
-            let stop_l = m.ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && !(tol_ok && !rnl);
-            let stop_r = m.ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && !(tol_ok && rnl);
+            // The tolerance window masks only the REF_RnL-selected switch.
+            let stop_l = m.ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && (rnl || !tol_ok);
+            let stop_r = m.ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && (!rnl || !tol_ok);
             let stop = stop_l || stop_r;
             let soft = m.ref_conf & SOFT_STOP != 0;
             let hard_stop = stop && !soft;
@@ -411,11 +412,7 @@ impl Tmc429 {
             let stop_at_target = m.rm <= SOFT_MODE && at_target && (m.v.unsigned_abs() >> 8) <= m.v_min as u32;
 
             // Interrupt conditions (C63).
-            let cond = (at_target as u8) * INT_POS_END
-                | ((sel && !tol_ok) as u8) * INT_REF_WRONG
-                | ((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS
-                | (stop as u8) * INT_STOP
-                | (!l as u8) * INT_STOP_LEFT_LOW
+            let cond = ((at_target as u8) * INT_POS_END) | (((sel && !tol_ok) as u8) * INT_REF_WRONG) | (((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS) | ((stop as u8) * INT_STOP) | ((!l as u8) * INT_STOP_LEFT_LOW)
                 | (!r as u8) * INT_STOP_RIGHT_LOW
                 | (l as u8) * INT_STOP_LEFT_HIGH
                 | (r as u8) * INT_STOP_RIGHT_HIGH;

@@ -4,8 +4,7 @@
 mod common;
 use common::*;
 
-use std::cell::RefCell;
-use std::rc::Rc;
+use std::sync::{Arc, Mutex};
 
 use proptest::prelude::*;
 use tmc429_model::pmulpdiv;
@@ -32,10 +31,10 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
     #[test]
     fn fast_path_is_exact(chip in prop::sample::select(Chip::ALL.to_vec()), ops in ops()) {
-        let trace: Rc<RefCell<Vec<(Inputs, Outputs, Probes)>>> = Rc::default();
+        let trace: Arc<Mutex<Vec<(Inputs, Outputs, Probes)>>> = Arc::default();
         let mut h = host(chip);
         let t = trace.clone();
-        h.set_observer(Box::new(move |c: &Tmc429, i: &Inputs, o: &Outputs| t.borrow_mut().push((*i, *o, c.probes()))));
+        h.set_observer(Box::new(move |c: &Tmc429, i: &Inputs, o: &Outputs| t.lock().unwrap().push((*i, *o, c.probes()))));
         // Moving axes to begin with.
         let p = pmulpdiv::calc(500, 2, 1, 0.01).register_value().unwrap();
         for m in 0..3 {
@@ -56,7 +55,7 @@ proptest! {
         }
         let mut slow = Tmc429::new(chip);
         slow.set_fast_path(false);
-        for (n, (i, o, pr)) in trace.borrow().iter().enumerate() {
+        for (n, (i, o, pr)) in trace.lock().unwrap().iter().enumerate() {
             let so = slow.tick(i);
             prop_assert_eq!(so, *o, "outputs differ at cycle {}", n);
             prop_assert_eq!(slow.probes(), *pr, "probes differ at cycle {}", n);
