@@ -66,3 +66,61 @@ pub fn sext(v: u32, bits: u32) -> i32 {
     let s = 32 - bits;
     ((v << s) as i32) >> s
 }
+
+/// The golden model behind its virtual µC ([`tmc429_model::host::Host`]).
+pub struct ModelChip {
+    host: tmc429_model::host::Host,
+    fclk: u64,
+}
+
+impl ModelChip {
+    pub fn new(chip: tmc429_model::Chip, fclk: u64) -> Self {
+        let mut host = tmc429_model::host::Host::new(chip);
+        // Switches open, REFR inputs driven (the module wires them to its end switches).
+        let p = host.pins_mut();
+        p.ref1 = false;
+        p.ref2 = false;
+        p.ref3 = false;
+        p.refr1 = false;
+        p.refr2 = false;
+        p.refr3 = false;
+        ModelChip { host, fclk }
+    }
+    pub fn host(&self) -> &tmc429_model::host::Host {
+        &self.host
+    }
+    pub fn host_mut(&mut self) -> &mut tmc429_model::host::Host {
+        &mut self.host
+    }
+}
+
+impl Spi429 for ModelChip {
+    fn write(&mut self, a7: u8, data: u32) -> u8 {
+        self.host.write(a7, data)
+    }
+    fn read(&mut self, a7: u8) -> u32 {
+        self.host.read(a7)
+    }
+    fn wait(&mut self, cycles: u64) {
+        self.host.wait(cycles)
+    }
+    fn cycle(&self) -> u64 {
+        self.host.cycle()
+    }
+    fn fclk(&self) -> u64 {
+        self.fclk
+    }
+    fn set_ref_pins(&mut self, left: [bool; 3], right: [bool; 3]) {
+        let p = self.host.pins_mut();
+        p.ref1 = left[0];
+        p.ref2 = left[1];
+        p.ref3 = left[2];
+        p.refr1 = right[0];
+        p.refr2 = right[1];
+        p.refr3 = right[2];
+    }
+    fn mechanical_position(&self, m: usize) -> i32 {
+        let pr = self.host.chip().probes();
+        pr.motor.get(m).map(|p| sext(p.x_actual, 24)).unwrap_or(0)
+    }
+}
