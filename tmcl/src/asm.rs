@@ -670,3 +670,8 @@ pub fn disassemble(code: &[Instruction]) -> String {
     }
     out
 }
+
+/// Opcode of a mnemonic.
+pub fn opcode_of(name: &str) -> Option<u8> {
+    spec_by_name(name).map(|s| s.op)
+}

@@ -7,8 +7,10 @@ pub mod chip;
 pub mod config;
 pub mod eeprom;
 pub mod io;
+pub mod link;
 pub mod module;
 pub mod proto;
+pub mod server;
 
 pub use chip::Spi429;
 pub use module::{Module, Origin};
