@@ -71,6 +71,9 @@ pub fn sext(v: u32, bits: u32) -> i32 {
 pub struct ModelChip {
     host: tmc429_model::host::Host,
     fclk: u64,
+    /// Mechanical position minus x_actual per motor: x_actual writes move the register, not
+    /// the axis.
+    offset: [i64; 3],
 }
 
 impl ModelChip {
@@ -84,10 +87,18 @@ impl ModelChip {
         p.refr1 = false;
         p.refr2 = false;
         p.refr3 = false;
-        ModelChip { host, fclk }
+        ModelChip { host, fclk, offset: [0; 3] }
     }
     pub fn host(&self) -> &tmc429_model::host::Host {
         &self.host
+    }
+    fn x_actual_probe(&self, m: usize) -> i32 {
+        let pr = self.host.chip().probes();
+        pr.motor.get(m).map(|p| sext(p.x_actual, 24)).unwrap_or(0)
+    }
+    /// Mechanical position of motor `m` (see [`Spi429::mechanical_position`]).
+    pub fn mechanical_position_of(&self, m: usize) -> i32 {
+        Spi429::mechanical_position(self, m)
     }
 }
 
@@ -98,6 +109,14 @@ unsafe impl Send for ModelChip {}
 
 impl Spi429 for ModelChip {
     fn write(&mut self, a7: u8, data: u32) -> u8 {
+        let m = (a7 >> 4) as usize;
+        if a7 & 0x4f == reg::X_ACTUAL && m < 3 {
+            let before = self.x_actual_probe(m);
+            let st = self.host.write(a7, data);
+            let after = self.x_actual_probe(m);
+            self.offset[m] += before as i64 - after as i64;
+            return st;
+        }
         self.host.write(a7, data)
     }
     fn read(&mut self, a7: u8) -> u32 {
@@ -122,7 +141,6 @@ impl Spi429 for ModelChip {
         p.refr3 = right[2];
     }
     fn mechanical_position(&self, m: usize) -> i32 {
-        let pr = self.host.chip().probes();
-        pr.motor.get(m).map(|p| sext(p.x_actual, 24)).unwrap_or(0)
+        (self.x_actual_probe(m) as i64 + self.offset.get(m).copied().unwrap_or(0)) as i32
     }
 }

@@ -101,8 +101,9 @@ enum RfsPhase {
     Idle,
     /// Looking for the switch at search speed in direction `dir`; reverse at the end switch on `rev`.
     Find { sw: Sw, dir: i32, rev: Option<Sw>, reversed: bool },
-    /// Moving back out of the switch at switch speed.
-    Leave { sw: Sw, dir: i32 },
+    /// Moving back out of the switch at switch speed; `armed` once the switch was seen active
+    /// while moving in direction `dir`.
+    Leave { sw: Sw, dir: i32, armed: bool },
     /// Re-entering the switch at switch speed; `p1` = where it was left.
     Enter { sw: Sw, dir: i32, p1: i32 },
 }
@@ -533,7 +534,7 @@ impl<C: Spi429> Module<C> {
                         self.rfs[m].phase = RfsPhase::Find { sw: Sw::Left, dir: -1, rev: None, reversed: false };
                         self.rfs_drive(m, -1, true);
                     } else {
-                        self.rfs[m].phase = RfsPhase::Leave { sw, dir: -dir };
+                        self.rfs[m].phase = RfsPhase::Leave { sw, dir: -dir, armed: false };
                         self.rfs_drive(m, -dir, false);
                     }
                 } else if let (Some(r), false) = (rev, reversed) {
@@ -543,15 +544,23 @@ impl<C: Spi429> Module<C> {
                     }
                 }
             }
-            RfsPhase::Leave { sw, dir } => {
-                if !self.sw_active(m, sw, regv) {
+            RfsPhase::Leave { sw, dir, armed } => {
+                // Only count the release once the axis moves in the leaving direction inside
+                // the switch (it may brake through a narrow switch first).
+                let v = sext(self.rd_motor(m, reg::V_ACTUAL), 12);
+                let active = self.sw_active(m, sw, regv);
+                let moving = v.signum() == dir.signum();
+                if moving && active && !armed {
+                    self.rfs[m].phase = RfsPhase::Leave { sw, dir, armed: true };
+                } else if moving && armed && !active {
                     let p1 = self.x_actual(m);
                     self.rfs[m].phase = RfsPhase::Enter { sw, dir: -dir, p1 };
                     self.rfs_drive(m, -dir, false);
                 }
             }
-            RfsPhase::Enter { sw, p1, .. } => {
-                if self.sw_active(m, sw, regv) {
+            RfsPhase::Enter { sw, p1, dir } => {
+                let v = sext(self.rd_motor(m, reg::V_ACTUAL), 12);
+                if v.signum() == dir.signum() && self.sw_active(m, sw, regv) {
                     let p2 = self.x_actual(m);
                     self.rfs[m].last_switch_pos = p2;
                     // Stop at once, make the centre of the two switching points position 0.
