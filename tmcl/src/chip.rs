@@ -102,11 +102,6 @@ impl ModelChip {
     }
 }
 
-// SAFETY: `Host` is not `Send` only because its optional observer callback is not required to
-// be `Send`. `ModelChip` never installs an observer and gives out no `&mut Host`, so the
-// observer stays `None` and every other field of `Host` is plain data.
-unsafe impl Send for ModelChip {}
-
 impl Spi429 for ModelChip {
     fn write(&mut self, a7: u8, data: u32) -> u8 {
         let m = (a7 >> 4) as usize;
