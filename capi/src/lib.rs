@@ -19,11 +19,9 @@
 //! destroyed chip. Different handles may be used from different threads at the same time; calls
 //! on one handle from several threads are serialized by a lock.
 
-use std::cell::RefCell;
 use std::collections::{BTreeMap, VecDeque};
 use std::ffi::{c_char, c_int, c_uint};
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::rc::Rc;
 use std::sync::{Arc, Mutex};
 
 use tmc429_model::events::{Event, EventDecoder};
@@ -141,9 +139,15 @@ pub struct tmc429_motor_probe_t {
 // The chip behind a handle.
 
 struct Queue {
-    dec: EventDecoder,
     events: VecDeque<Event>,
     dropped: u64,
+}
+
+type SharedQueue = Arc<Mutex<Queue>>;
+
+fn lock_queue(q: &SharedQueue) -> std::sync::MutexGuard<'_, Queue> {
+    // Pushing and draining cannot panic half-way; a poisoned queue is still consistent.
+    q.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 struct Sim {
@@ -151,31 +155,23 @@ struct Sim {
     fclk: u64,
     /// Remainder (in µs·Hz) of `tmc429_advance_us` calls, so repeated calls do not drift.
     us_rem: u64,
-    /// Shared with the observer closure installed in `host` (and nowhere else).
-    queue: Rc<RefCell<Queue>>,
+    /// Filled by the observer of `host` (which owns the decoder), emptied by the drain.
+    queue: SharedQueue,
     events_on: bool,
 }
 
-// SAFETY: `Sim` is !Send only because of the `Rc` in `queue` and the `Box<dyn FnMut>` observer
-// inside `host`. The observer is always the closure of `attach_decoder`, which captures only a
-// clone of `queue`. Both clones live inside this one `Sim` and are never handed out, so they
-// always move between threads together and are only touched under the `Sim`'s mutex.
-unsafe impl Send for Sim {}
-
-fn attach_decoder(host: &mut Host, queue: &Rc<RefCell<Queue>>) {
-    let q = Rc::clone(queue);
+/// Installs a fresh pin-level decoder as the host's observer. The decoder lives in the closure;
+/// the shared queue is locked only when an event occurs, not at every edge.
+fn attach_decoder(host: &mut Host, queue: &SharedQueue) {
+    let q = Arc::clone(queue);
+    let mut dec = EventDecoder::new();
     host.set_observer(Box::new(move |chip: &Tmc429, _inp, out| {
-        let mut q = q.borrow_mut();
-        let Queue {
-            dec,
-            events,
-            dropped,
-        } = &mut *q;
         dec.observe(chip, out, chip.cycle(), &mut |e| {
-            if events.len() < TMC429_EVENT_QUEUE_CAPACITY as usize {
-                events.push_back(e);
+            let mut q = lock_queue(&q);
+            if q.events.len() < TMC429_EVENT_QUEUE_CAPACITY as usize {
+                q.events.push_back(e);
             } else {
-                *dropped += 1;
+                q.dropped += 1;
             }
         });
     }));
@@ -183,8 +179,7 @@ fn attach_decoder(host: &mut Host, queue: &Rc<RefCell<Queue>>) {
 
 impl Sim {
     fn new(chip: Chip, fclk: u64) -> Sim {
-        let queue = Rc::new(RefCell::new(Queue {
-            dec: EventDecoder::new(),
+        let queue = Arc::new(Mutex::new(Queue {
             events: VecDeque::new(),
             dropped: 0,
         }));
@@ -617,7 +612,6 @@ pub extern "C" fn tmc429_events_enable(h: u64, on: c_int) -> c_int {
         };
         with_sim(h, |s| {
             if on && !s.events_on {
-                s.queue.borrow_mut().dec = EventDecoder::new();
                 attach_decoder(&mut s.host, &s.queue);
             } else if !on && s.events_on {
                 s.host.take_observer();
@@ -638,7 +632,7 @@ pub unsafe extern "C" fn tmc429_events_pending(h: u64, out: *mut usize) -> c_int
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
-            *out = s.queue.borrow().events.len();
+            *out = lock_queue(&s.queue).events.len();
             Ok(TMC429_OK)
         })
     })
@@ -663,7 +657,7 @@ pub unsafe extern "C" fn tmc429_events_drain(
             return Err(TMC429_ERR_LENGTH);
         }
         with_sim(h, |s| {
-            let mut q = s.queue.borrow_mut();
+            let mut q = lock_queue(&s.queue);
             let n = q.events.len().min(cap).min(c_int::MAX as usize);
             for (i, e) in q.events.drain(..n).enumerate() {
                 // SAFETY: buf is non-null and valid for `cap` ≥ n elements (caller's contract).
@@ -684,7 +678,7 @@ pub unsafe extern "C" fn tmc429_events_dropped(h: u64, out: *mut u64) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
-            *out = s.queue.borrow().dropped;
+            *out = lock_queue(&s.queue).dropped;
             Ok(TMC429_OK)
         })
     })
