@@ -24,41 +24,34 @@ pub trait Spi429 {
     fn mechanical_position(&self, m: usize) -> i32;
 }
 
-/// Register addresses (A7) of the TMC429 (spec digest §1.2, §2).
+/// Register addresses and bits of the TMC429, from the model's register map.
 pub mod reg {
-    pub const X_TARGET: u8 = 0;
-    pub const X_ACTUAL: u8 = 1;
-    pub const V_MIN: u8 = 2;
-    pub const V_MAX: u8 = 3;
-    pub const V_TARGET: u8 = 4;
-    pub const V_ACTUAL: u8 = 5;
-    pub const A_MAX: u8 = 6;
-    pub const A_ACTUAL: u8 = 7;
-    pub const PMUL_PDIV: u8 = 9;
-    pub const REFCONF_RM: u8 = 10;
-    pub const INT_MASK_FLAGS: u8 = 11;
-    pub const PULSEDIV_RAMPDIV: u8 = 12;
-    pub const DX_REF_TOLERANCE: u8 = 13;
+    use tmc429_model::motor;
+    use tmc429_model::regmap::{f, global_a7, jdx};
+    pub use tmc429_model::regmap::idx::{
+        A_ACTUAL, A_MAX, CLK_CONFIG as PULSEDIV_RAMPDIV, DX_REF_TOLERANCE, INTERRUPT as INT_MASK_FLAGS, PMUL_PDIV,
+        REF_CONF_RM as REFCONF_RM, V_ACTUAL, V_MAX, V_MIN, V_TARGET, X_ACTUAL, X_TARGET,
+    };
     /// Motor register address: `SMDA = m`, `IDX = idx`.
     pub fn motor(m: usize, idx: u8) -> u8 {
-        ((m as u8) << 4) | (idx & 0x0f)
+        tmc429_model::regmap::motor_a7(m as u8, idx)
     }
-    pub const IF_CONFIGURATION: u8 = 0x34;
-    pub const REF_SWITCHES: u8 = 0x3e;
-    pub const GLOBAL_PARAMETERS: u8 = 0x3f;
+    pub const IF_CONFIGURATION: u8 = global_a7(jdx::IF_CONFIGURATION);
+    pub const REF_SWITCHES: u8 = global_a7(jdx::REF_SWITCHES);
+    pub const GLOBAL_PARAMETERS: u8 = global_a7(jdx::GLOBAL_PARAMETERS);
 
     /// if_configuration bits (TMC429 §8.2.4).
-    pub const IF_INV_REF: u32 = 1 << 0;
-    pub const IF_EN_SD: u32 = 1 << 5;
-    pub const IF_EN_REFR: u32 = 1 << 8;
+    pub const IF_INV_REF: u32 = f::INV_REF.mask();
+    pub const IF_EN_SD: u32 = f::EN_SD.mask();
+    pub const IF_EN_REFR: u32 = f::EN_REFR.mask();
     /// ref_conf bits in register 10.
-    pub const DISABLE_STOP_L: u32 = 1 << 8;
-    pub const DISABLE_STOP_R: u32 = 1 << 9;
-    pub const SOFT_STOP: u32 = 1 << 10;
+    pub const DISABLE_STOP_L: u32 = f::DISABLE_STOP_L.mask();
+    pub const DISABLE_STOP_R: u32 = f::DISABLE_STOP_R.mask();
+    pub const SOFT_STOP: u32 = f::SOFT_STOP.mask();
     /// Ramp modes (rm).
-    pub const RM_RAMP: u32 = 0;
-    pub const RM_SOFT: u32 = 1;
-    pub const RM_VELOCITY: u32 = 2;
+    pub const RM_RAMP: u32 = motor::RAMP_MODE as u32;
+    pub const RM_SOFT: u32 = motor::SOFT_MODE as u32;
+    pub const RM_VELOCITY: u32 = motor::VELOCITY_MODE as u32;
 }
 
 /// Sign-extends the low `bits` bits.
