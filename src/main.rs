@@ -21,6 +21,8 @@ enum Command {
     Spi(cmd::spi::Args),
     /// Print the register map (Markdown, C header or JSON).
     Regmap(cmd::regmap::Args),
+    /// TMCL module layer: serve a virtual TMCM-3110, assemble and run TMCL programs.
+    Tmcl(cmd::tmcl::Args),
 }
 
 /// Exit status of a command.
@@ -44,6 +46,7 @@ fn main() -> ExitCode {
     let res = match cli.command {
         Command::Spi(a) => cmd::spi::run(a),
         Command::Regmap(a) => cmd::regmap::run(a),
+        Command::Tmcl(a) => cmd::tmcl::run(a),
     };
     match res {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,

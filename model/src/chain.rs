@@ -139,21 +139,21 @@ impl Chain {
         }
         // Requests (C83): a step of any motor, cw, the continuous-update timer.
         let steps = motors[0].step as u8 | (motors[1].step as u8) << 1 | (motors[2].step as u8) << 2;
+        let cont = g.g(f::CONT_UPDATE) != 0;
         // Fast path: counting down inside a state.
-        if self.cnt > 1 && ramp_ticks == 0 && self.state != IDLE {
+        if self.cnt > 1 && (ramp_ticks == 0 || !cont) && self.state != IDLE {
             self.cnt -= 1;
             self.req |= steps != 0 || g.cw;
             self.stepped |= steps;
             return false;
         }
         let mut request = self.req || steps != 0 || g.cw;
-        if ramp_ticks != 0 {
-            let cont = g.g(f::CONT_UPDATE) != 0;
+        if ramp_ticks != 0 && cont {
             for m in 0..3 {
                 if (ramp_ticks >> m) & 1 != 0 {
                     let wrap = self.cupd[m] == CUPD_RAMP_TICKS - 1;
                     self.cupd[m] = (self.cupd[m] + 1) & (CUPD_RAMP_TICKS - 1);
-                    request |= wrap && cont;
+                    request |= wrap;
                 }
             }
         }

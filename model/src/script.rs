@@ -11,8 +11,7 @@
 use std::fmt;
 use std::io::{self, Write};
 
-use std::cell::RefCell;
-use std::rc::Rc;
+use std::sync::{Arc, Mutex};
 
 use crate::events::{Event, EventDecoder};
 use crate::host::Host;
@@ -226,8 +225,8 @@ pub fn decode_status(st: u8) -> String {
 }
 
 /// Writes the queued events with a cycle ≤ `upto` (all with `None`).
-fn flush_events(queue: &Rc<RefCell<Vec<Event>>>, upto: Option<u64>, out: &mut dyn Write) -> io::Result<()> {
-    let mut q = queue.borrow_mut();
+fn flush_events(queue: &Arc<Mutex<Vec<Event>>>, upto: Option<u64>, out: &mut dyn Write) -> io::Result<()> {
+    let mut q = queue.lock().unwrap();
     let n = match upto {
         Some(c) => q.iter().take_while(|e| e.cycle() <= c).count(),
         None => q.len(),
@@ -240,13 +239,13 @@ fn flush_events(queue: &Rc<RefCell<Vec<Event>>>, upto: Option<u64>, out: &mut dy
 
 /// Runs a parsed script, writing one line per frame (and, with `events`, one per event).
 pub fn run(host: &mut Host, script: &[Line], opts: RunOptions, out: &mut dyn Write) -> io::Result<()> {
-    let queue: Rc<RefCell<Vec<Event>>> = Rc::new(RefCell::new(Vec::new()));
+    let queue: Arc<Mutex<Vec<Event>>> = Arc::new(Mutex::new(Vec::new()));
     let saved = if opts.events {
         let q = queue.clone();
         let mut dec = EventDecoder::new();
         let prev = host.take_observer();
         host.set_observer(Box::new(move |c, _i, o| {
-            dec.observe(c, o, c.cycle(), &mut |e| q.borrow_mut().push(e));
+            dec.observe(c, o, c.cycle(), &mut |e| q.lock().unwrap().push(e));
         }));
         Some(prev)
     } else {
@@ -267,7 +266,7 @@ fn run_lines(
     host: &mut Host,
     script: &[Line],
     opts: RunOptions,
-    queue: &Rc<RefCell<Vec<Event>>>,
+    queue: &Arc<Mutex<Vec<Event>>>,
     out: &mut dyn Write,
 ) -> io::Result<()> {
     for l in script {

@@ -55,10 +55,10 @@ impl StepDir {
         StepDir::default()
     }
 
-    /// True when nothing is in progress (the fast path of [`StepDir::tick`]).
+    /// True when an edge without steps changes nothing (`enabled` = Step/Dir mode).
     #[inline]
-    pub fn quiet(&self) -> bool {
-        self.state == [READY; 3] && self.backlog == [0; 3]
+    pub fn quiet(&self, enabled: bool) -> bool {
+        self.busy == 0 && (enabled || (self.step == [false; 3] && self.dir == [false; 3]))
     }
 
     /// One CLK edge for `n` motors. `enabled`: Step/Dir mode (C91); while disabled the unit is

@@ -154,10 +154,10 @@ fn sck_period() {
         let (mut h, trace) = host_with_trace(Chip::Tmc429);
         load_tables(&mut h);
         h.write(GCONF, gconf(2, c, 0));
-        trace.borrow_mut().clear();
+        trace.lock().unwrap().clear();
         request(&mut h);
         h.wait(45 * 2 * 256);
-        let t = trace.borrow();
+        let t = trace.lock().unwrap();
         let lows = pulses(&t, |o| !o.sck_s);
         assert_eq!(lows.len(), 36, "clk2_div {c}");
         let lo = c as u64 + 1;
@@ -180,10 +180,11 @@ fn datagram_length_limits() {
     let (mut h, trace) = host_with_trace(Chip::Tmc428);
     h.datagram(0x80000031); // cell 0: One with NxM
     h.write(GCONF, gconf(0, 7, 0));
-    trace.borrow_mut().clear();
+    trace.lock().unwrap().clear();
     request(&mut h);
     h.wait(200);
-    assert_eq!(pulses(&trace.borrow(), |o| !o.nscs_s), vec![(pulses(&trace.borrow(), |o| !o.nscs_s)[0].0, 48)]);
+    let p = pulses(&trace.lock().unwrap(), |o| !o.nscs_s);
+    assert_eq!(p, vec![(p[0].0, 48)]);
 
     let (mut h, trace) = host_with_trace(Chip::Tmc428);
     for a in 0..32u8 {
@@ -191,10 +192,10 @@ fn datagram_length_limits() {
         h.write(ram_a7(a), odd << 8 | 0x10);
     }
     h.write(GCONF, gconf(0, 255, 0));
-    trace.borrow_mut().clear();
+    trace.lock().unwrap().clear();
     request(&mut h);
     h.wait(35_000);
-    let p = pulses(&trace.borrow(), |o| !o.nscs_s);
+    let p = pulses(&trace.lock().unwrap(), |o| !o.nscs_s);
     assert_eq!(p.len(), 1);
     assert_eq!(p[0].1, 33792);
 }
@@ -229,7 +230,7 @@ fn continuous_update_rate() {
         }
         let t0 = h.cycle() + (1 << 23);
         h.wait(t0 - h.cycle());
-        log.borrow_mut().clear();
+        log.lock().unwrap().clear();
         h.wait(window);
         assert_eq!(chains(&log).len(), want, "ramp_div {rd:?}");
     }
@@ -291,10 +292,10 @@ fn polarities() {
     let pol = f::POL_PH_AB.put(1) | f::POL_FD_AB.put(1) | f::POL_DAC_AB.put(1);
     h.write(GCONF, gconf(2, 7, pol | f::POL_NSCS_S.put(1) | f::POL_SCK_S.put(1)));
     assert!(!h.outputs().nscs_s && !h.outputs().sck_s, "idle: CS low (high active), SCK low");
-    trace.borrow_mut().clear();
+    trace.lock().unwrap().clear();
     request(&mut h);
     h.wait(1000);
-    let t = trace.borrow();
+    let t = trace.lock().unwrap();
     let cs = pulses(&t, |o| o.nscs_s);
     assert_eq!(cs.len(), 1);
     // Sample SDO_S at the inverted clock's falling edges (the driver's rising SCK).
@@ -316,10 +317,10 @@ fn individual_chip_selects() {
     let (mut h, trace) = host_with_trace(Chip::Tmc429);
     load_tables(&mut h);
     h.write(GCONF, gconf(2, 7, f::CS_COM_IND.put(1)));
-    trace.borrow_mut().clear();
+    trace.lock().unwrap().clear();
     request(&mut h);
     h.wait(1000);
-    let t = trace.borrow();
+    let t = trace.lock().unwrap();
     let rising_while = |sel: &dyn Fn(&tmc429_model::Outputs) -> bool| {
         t.windows(2).filter(|w| !w[0].1.sck_s && w[1].1.sck_s && sel(&w[0].1)).count()
     };

@@ -71,7 +71,7 @@ fn walk(usrs: u32, negative: bool) {
     h.write(motor_a7(0, 10), 3); // HOLD
     let table = table_12_4(usrs);
     let steps = table.len() + 3;
-    log.borrow_mut().clear();
+    log.lock().unwrap().clear();
     h.write(motor_a7(0, 5), if negative { (-64i32 as u32) & 0xFFF } else { 64 });
     // 64 → a step every 1024 CLK; an 18-bit datagram takes 21·16 = 336 CLK.
     h.wait(steps as u64 * 1024 + 600);
@@ -123,7 +123,7 @@ fn usrs_change_keeps_offset() {
     h.write(motor_a7(0, 15), 1);
     h.write(motor_a7(0, 12), 0);
     h.write(motor_a7(0, 10), 3);
-    log.borrow_mut().clear();
+    log.lock().unwrap().clear();
     h.write(motor_a7(0, 5), 64);
     h.wait(2 * 1024 + 600);
     let c = chains(&log);
@@ -171,7 +171,7 @@ fn agtat_while_accelerating() {
         h.write(motor_a7(0, 6), 100); // a_max
         h.write(motor_a7(0, 3), 2047);
         h.write(motor_a7(0, 10), 2); // VELOCITY
-        log.borrow_mut().clear();
+        log.lock().unwrap().clear();
         h.write(motor_a7(0, 4), 300); // v_target: 768 ramp ticks of acceleration
         h.wait(40_000);
         assert_eq!(h.read(motor_a7(0, 7)), 0, "cruising");

@@ -5,11 +5,11 @@ use drv::*;
 use tmc429_model::regmap::{f, global_a7, motor_a7};
 use tmc429_model::{Chip, Outputs};
 
-fn sd_host(chip: Chip, stpdiv: u32, ifc: u32) -> (tmc429_model::host::Host, std::rc::Rc<std::cell::RefCell<Vec<(u64, Outputs)>>>) {
+fn sd_host(chip: Chip, stpdiv: u32, ifc: u32) -> (tmc429_model::host::Host, std::sync::Arc<std::sync::Mutex<Vec<(u64, Outputs)>>>) {
     let (mut h, t) = host_with_trace(chip);
     h.write(GCONF, gconf(0, stpdiv, 0));
     h.write(IF_CONF, f::EN_SD.put(1) | ifc);
-    t.borrow_mut().clear();
+    t.lock().unwrap().clear();
     (h, t)
 }
 
@@ -29,11 +29,11 @@ fn pulse_length() {
         hold_velocity(&mut h, 0, 0);
         h.wait(3_000);
         let x = h.read(motor_a7(0, 1));
-        let p = pulses(&t.borrow(), |o| o.sdo_s);
+        let p = pulses(&t.lock().unwrap(), |o| o.sdo_s);
         assert!(x > 5);
         assert_eq!(p.len() as u32, x, "STPDIV {s}");
         assert!(p.iter().all(|&(_, l)| l == 16 * (1 + s as u64)), "STPDIV {s}: {:?}", &p[..3]);
-        assert!(t.borrow().iter().all(|(_, o)| !o.sck_s), "DIR low for positive steps");
+        assert!(t.lock().unwrap().iter().all(|(_, o)| !o.sck_s), "DIR low for positive steps");
     }
 }
 
@@ -46,7 +46,7 @@ fn max_rate() {
     hold_velocity(&mut h, 0, 0);
     h.wait(1_000);
     let x = h.read(motor_a7(0, 1));
-    let p = pulses(&t.borrow(), |o| o.sdo_s);
+    let p = pulses(&t.lock().unwrap(), |o| o.sdo_s);
     assert_eq!(p.len() as u32, x);
     assert!(x > 3000);
     for w in p.windows(2) {
@@ -64,7 +64,7 @@ fn step_half_toggles() {
     hold_velocity(&mut h, 0, 0);
     h.wait(1_000);
     let x = h.read(motor_a7(0, 1));
-    let tr = t.borrow();
+    let tr = t.lock().unwrap();
     let toggles = tr.windows(2).filter(|w| w[0].1.sdo_s != w[1].1.sdo_s).count();
     assert!(x > 5);
     assert_eq!(toggles as u32, x);
@@ -77,7 +77,7 @@ fn inverted_polarities() {
     assert!(h.outputs().sdo_s, "inverted STEP idles high");
     hold_velocity(&mut h, 0, -40);
     h.wait(20_000);
-    let tr = t.borrow();
+    let tr = t.lock().unwrap();
     let p = pulses(&tr, |o| !o.sdo_s);
     assert!(p.len() > 5);
     assert!(p.iter().all(|&(_, l)| l == 32));
@@ -94,7 +94,7 @@ fn direction_to_step_delay() {
     h.wait(20_000);
     hold_velocity(&mut h, 0, -50);
     h.wait(20_000);
-    let tr = t.borrow();
+    let tr = t.lock().unwrap();
     let dir_edges: Vec<u64> = tr.windows(2).filter(|w| !w[0].1.sck_s && w[1].1.sck_s).map(|w| w[1].0).collect();
     assert_eq!(dir_edges.len(), 1);
     let d = dir_edges[0];
@@ -138,12 +138,12 @@ fn tmc4210() {
     assert!(h.outputs().sdo_s && h.outputs().sck_s && h.outputs().nscs_s);
     hold_velocity(&mut h, 0, -100);
     h.wait(10_000);
-    assert!(t.borrow().iter().all(|(_, o)| o.sdo_s && o.sck_s), "high until configured");
+    assert!(t.lock().unwrap().iter().all(|(_, o)| o.sdo_s && o.sck_s), "high until configured");
     h.write(GCONF, f::STPDIV.put(0));
     h.write(IF_CONF, f::EN_SD.put(1));
-    t.borrow_mut().clear();
+    t.lock().unwrap().clear();
     h.wait(10_000);
-    let tr = t.borrow();
+    let tr = t.lock().unwrap();
     let p = pulses(&tr, |o| o.sdo_s);
     assert!(p.len() > 10);
     assert!(p.iter().all(|&(_, l)| l == 16));

@@ -210,3 +210,18 @@ fn position_compare() {
     h.wait(5);
     assert!(!h.outputs().poscmp);
 }
+
+/// C63: STOP_RIGHT_HIGH and STOP_RIGHT_LOW on the right switch (mot1r: REF3 = R1).
+#[test]
+fn right_switch_interrupts() {
+    let mut h = host(Chip::Tmc428);
+    h.write(global_a7(15), 0x20_0F00);
+    wr(&mut h, 0, INTERRUPT, 0xF000);
+    set_refs(&mut h, false, false, true);
+    h.wait(4);
+    assert_eq!(rd(&mut h, 0, INTERRUPT), 0xF080, "STOP_RIGHT_HIGH");
+    wr(&mut h, 0, INTERRUPT, 0xF0FF);
+    set_refs(&mut h, false, false, false);
+    h.wait(4);
+    assert_eq!(rd(&mut h, 0, INTERRUPT), 0xF020, "STOP_RIGHT_LOW");
+}

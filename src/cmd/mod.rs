@@ -2,3 +2,4 @@
 pub mod common;
 pub mod regmap;
 pub mod spi;
+pub mod tmcl;

@@ -1,31 +1,30 @@
 //! Helpers shared by the driver-side tests: a pin-level recorder of chain datagrams and steps.
 #![allow(dead_code)]
 
-use std::cell::RefCell;
-use std::rc::Rc;
+use std::sync::{Arc, Mutex};
 
 use tmc429_model::events::{Event, EventDecoder};
 use tmc429_model::host::Host;
 use tmc429_model::regmap::{global_a7, motor_a7, ram_a7};
 use tmc429_model::{Chip, Outputs};
 
-pub type Log = Rc<RefCell<Vec<(Event, Outputs)>>>;
+pub type Log = Arc<Mutex<Vec<(Event, Outputs)>>>;
 
 /// A host whose every edge goes through the pin-level [`EventDecoder`].
-pub fn host_with_events(chip: Chip) -> (Host, Rc<RefCell<Vec<Event>>>) {
+pub fn host_with_events(chip: Chip) -> (Host, Arc<Mutex<Vec<Event>>>) {
     let mut h = Host::new(chip);
-    let log = Rc::new(RefCell::new(Vec::new()));
+    let log = Arc::new(Mutex::new(Vec::new()));
     let l2 = log.clone();
     let mut dec = EventDecoder::new();
     h.set_observer(Box::new(move |c, _i, o| {
         let cyc = c.cycle();
-        dec.observe(c, o, cyc, &mut |e| l2.borrow_mut().push(e));
+        dec.observe(c, o, cyc, &mut |e| l2.lock().unwrap().push(e));
     }));
     (h, log)
 }
 
-pub fn chains(log: &Rc<RefCell<Vec<Event>>>) -> Vec<(u64, u32, u64)> {
-    log.borrow()
+pub fn chains(log: &Arc<Mutex<Vec<Event>>>) -> Vec<(u64, u32, u64)> {
+    log.lock().unwrap()
         .iter()
         .filter_map(|e| match *e {
             Event::Chain { cycle, nbits, bits } => Some((cycle, nbits, bits)),
@@ -34,8 +33,8 @@ pub fn chains(log: &Rc<RefCell<Vec<Event>>>) -> Vec<(u64, u32, u64)> {
         .collect()
 }
 
-pub fn steps(log: &Rc<RefCell<Vec<Event>>>) -> Vec<(u64, u8, bool)> {
-    log.borrow()
+pub fn steps(log: &Arc<Mutex<Vec<Event>>>) -> Vec<(u64, u8, bool)> {
+    log.lock().unwrap()
         .iter()
         .filter_map(|e| match *e {
             Event::Step { cycle, motor, negative } => Some((cycle, motor, negative)),
@@ -101,11 +100,11 @@ pub fn ram_word(a: u8) -> u8 {
 }
 
 /// A host that records the outputs after every edge: `trace[i]` = (cycle, outputs).
-pub fn host_with_trace(chip: Chip) -> (Host, Rc<RefCell<Vec<(u64, Outputs)>>>) {
+pub fn host_with_trace(chip: Chip) -> (Host, Arc<Mutex<Vec<(u64, Outputs)>>>) {
     let mut h = Host::new(chip);
-    let log = Rc::new(RefCell::new(Vec::new()));
+    let log = Arc::new(Mutex::new(Vec::new()));
     let l2 = log.clone();
-    h.set_observer(Box::new(move |c, _i, o| l2.borrow_mut().push((c.cycle(), *o))));
+    h.set_observer(Box::new(move |c, _i, o| l2.lock().unwrap().push((c.cycle(), *o))));
     (h, log)
 }
 
