@@ -223,6 +223,15 @@ impl Chain {
         changed
     }
 
+    /// The edge of a busy chain that only counts (fast path of `Tmc429::tick`; the caller has
+    /// checked `cnt > 1`, SPI mode, no step, no counting ramp tick).
+    #[inline]
+    pub fn count_down(&mut self) {
+        if self.state != IDLE {
+            self.cnt -= 1;
+        }
+    }
+
     /// Starts a datagram (C80): snapshot of all signals of all motors, cover and dgw taken.
     fn start(&mut self, ram: &[u8; 128], g: &mut Global, motors: &[Motor; 3], cur: &[CurrentScale; 3]) {
         let pol = Polarity {

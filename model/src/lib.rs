@@ -280,6 +280,7 @@ impl Tmc429 {
         if self.idle_edge(inp) {
             self.cycle += 1;
             self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
+            self.chain.count_down();
             return self.out;
         }
         self.full_tick(inp)
@@ -647,7 +648,14 @@ impl Tmc429 {
     fn drivers_quiet(&self) -> bool {
         if self.chip != Chip::Tmc4210 {
             let c = &self.chain;
-            if c.state != chain::IDLE || c.req || c.cs || c.stepped != 0 || (self.global.cw && self.spi_mode()) {
+            let spi = self.spi_mode();
+            let quiet = if c.state == chain::IDLE {
+                !c.req && !c.cs && c.stepped == 0 && !(self.global.cw && spi)
+            } else {
+                // Counting down inside a state: the edge only decrements (Chain::count_down).
+                spi && c.cnt > 1
+            };
+            if !quiet {
                 return false;
             }
             if self.prescaler & 31 == PHASE_RAMP {
@@ -661,7 +669,7 @@ impl Tmc429 {
                 }
             }
         }
-        self.chip == Chip::Tmc428 || self.sd.quiet(self.step_dir_mode())
+        self.chip == Chip::Tmc428 || self.sd.quiet(self.step_dir_mode(), self.cycle + 1)
     }
 
     /// Driver interface mode of the current state (C89, C91).

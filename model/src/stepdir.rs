@@ -57,8 +57,13 @@ impl StepDir {
 
     /// True when an edge without steps changes nothing (`enabled` = Step/Dir mode).
     #[inline]
-    pub fn quiet(&self, enabled: bool) -> bool {
-        self.busy == 0 && (enabled || (self.step == [false; 3] && self.dir == [false; 3]))
+    /// `now`: index of the coming edge.
+    pub fn quiet(&self, enabled: bool, now: u64) -> bool {
+        if enabled {
+            self.busy == 0 || now < self.next
+        } else {
+            self.busy == 0 && self.step == [false; 3] && self.dir == [false; 3]
+        }
     }
 
     /// One CLK edge for `n` motors. `enabled`: Step/Dir mode (C91); while disabled the unit is
