@@ -1,1 +1,3 @@
-//! Co-simulation harness (see docs/cosim.md).
+//! Co-simulation harness: the golden model and the Verilated RTL in lock-step
+//! (docs/cosim.md).
+pub mod rtl;
