@@ -1,1 +1,58 @@
-fn main() {}
+//! `tmc429`: the command-line tool of the tmc429 reference implementation.
+//! It parses arguments and calls the crates; exit 0 = success, 1 = a check failed,
+//! 2 = bad usage or bad input.
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+mod cmd;
+
+#[derive(Parser)]
+#[command(name = "tmc429", version, about = "Bit-exact reference of the TMC428/TMC429/TMC4210 motion controllers")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Drive the virtual chip through its SPI pins from a datagram script.
+    Spi(cmd::spi::Args),
+    /// Print the register map (Markdown, C header or JSON).
+    Regmap(cmd::regmap::Args),
+}
+
+/// Exit status of a command.
+pub enum Outcome {
+    Ok,
+    /// A check failed (exit 1).
+    Failed,
+}
+
+/// A user error: printed as `tmc429: error: …`, exit 2.
+pub struct UserError(pub String);
+
+impl<E: std::fmt::Display> From<E> for UserError {
+    fn from(e: E) -> Self {
+        UserError(e.to_string())
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let res = match cli.command {
+        Command::Spi(a) => cmd::spi::run(a),
+        Command::Regmap(a) => cmd::regmap::run(a),
+    };
+    match res {
+        Ok(Outcome::Ok) => ExitCode::SUCCESS,
+        Ok(Outcome::Failed) => ExitCode::from(1),
+        Err(UserError(msg)) => {
+            for line in msg.lines() {
+                eprintln!("tmc429: error: {line}");
+            }
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,5 +1,544 @@
 //! Cycle-accurate, pin-level golden model of the Trinamic TMC428 / TMC429 / TMC4210.
+//!
+//! [`Tmc429::tick`] is one rising CLK edge (docs/model-contract.md C1). The model is the
+//! executable definition of the chip: the RTL in `rtl/` matches it cycle for cycle, pins and
+//! [`Probes`] alike.
+
 pub mod chip;
+pub mod events;
+pub mod host;
+pub mod motor;
 pub mod pins;
+pub mod pmulpdiv;
+pub mod ram;
+pub mod regmap;
+pub mod regmap_render;
+pub mod script;
+pub mod spi_slave;
+pub mod switches;
+pub mod sync;
+
 pub use chip::Chip;
 pub use pins::{ChainProbe, Inputs, MotorProbe, Outputs, Probes};
+
+use motor::*;
+use regmap::{f, Addr};
+use spi_slave::{SpiEvent, SpiSlave};
+use sync::SyncBank;
+
+/// Width of the pre-divider counter C (C40): 5 phase bits + 15 frame bits cover every
+/// pulse_div and ramp_div.
+pub const PRESCALER_BITS: u32 = 20;
+const PRESCALER_MASK: u32 = (1 << PRESCALER_BITS) - 1;
+
+/// Phases of the 32-cycle frame (C41).
+pub const PHASE_SNAPSHOT: [u32; 3] = [0, 9, 18];
+pub const PHASE_RAMP: u32 = 30;
+pub const PHASE_PULSE: u32 = 31;
+
+/// type_version of the TMC429 and TMC4210 (TMC429 §8.2.4.4).
+pub const TYPE_VERSION: u32 = 0x429101;
+
+/// Global registers and driver-chain state shared by the motors.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Global {
+    /// Global parameter register $7E, as stored (unused bits 0).
+    pub gconf: u32,
+    /// if_configuration (TMC429/TMC4210).
+    pub ifconf: u32,
+    pub pos_comp: u32,
+    /// pos_comp_int mask M and flag I.
+    pub pc_m: bool,
+    pub pc_i: bool,
+    /// History flop of the position match (C65).
+    pub pc_match_prev: bool,
+    pub cover_pos: u8,
+    pub cover_len: u8,
+    pub cover_datagram: u32,
+    /// Cover datagram waiting (cw).
+    pub cw: bool,
+    /// A datagram_low/high_word write waits for the next datagram (C-chain).
+    pub dgw: bool,
+    /// 48-bit readback shift register of SDI_S.
+    pub readback: u64,
+    /// Switch levels sampled through the 74HC157 when refmux = 1 (bit 2m = Rm, 2m+1 = Lm).
+    pub mux_switches: u8,
+}
+
+impl Global {
+    fn reset() -> Self {
+        Global {
+            gconf: f::CLK2_DIV.put(15),
+            ifconf: 0,
+            pos_comp: 0,
+            pc_m: false,
+            pc_i: false,
+            pc_match_prev: true,
+            cover_pos: 0,
+            cover_len: 0,
+            cover_datagram: 0,
+            cw: false,
+            dgw: false,
+            readback: 0,
+            mux_switches: 0,
+        }
+    }
+    #[inline]
+    pub fn g(&self, fl: regmap::Field) -> u32 {
+        fl.get(self.gconf)
+    }
+    #[inline]
+    pub fn ifc(&self, fl: regmap::Field) -> bool {
+        fl.get(self.ifconf) != 0
+    }
+}
+
+/// The chip.
+#[derive(Clone, Debug)]
+pub struct Tmc429 {
+    chip: Chip,
+    cycle: u64,
+    sync: SyncBank,
+    spi: SpiSlave,
+    /// Pre-divider counter C (C40).
+    prescaler: u32,
+    power_down: bool,
+    pub(crate) motors: [Motor; 3],
+    pub(crate) global: Global,
+    pub(crate) ram: [u8; 128],
+    out: Outputs,
+}
+
+impl Tmc429 {
+    /// A chip in its power-on state (C2).
+    pub fn new(chip: Chip) -> Self {
+        let mut t = Tmc429 {
+            chip,
+            cycle: 0,
+            sync: SyncBank::reset(),
+            spi: SpiSlave::reset(),
+            prescaler: 0,
+            power_down: false,
+            motors: [Motor::reset(); 3],
+            global: Global::reset(),
+            ram: ram::power_on(chip),
+            out: Outputs {
+                nint_sdo_c: true,
+                sdoz_c: false,
+                sdoz_c_oe: false,
+                nscs_s: true,
+                sck_s: true,
+                sdo_s: false,
+                sdi_s_o: false,
+                sdi_s_oe: false,
+                nscs2: true,
+                nscs3: true,
+                poscmp: false,
+            },
+        };
+        t.out.poscmp = t.has_pos_comp();
+        t
+    }
+
+    /// Back to the power-on state (the RTL's synchronous `rst`).
+    pub fn reset(&mut self) {
+        *self = Tmc429::new(self.chip);
+    }
+
+    pub fn chip(&self) -> Chip {
+        self.chip
+    }
+
+    /// CLK edges since power-on.
+    pub fn cycle(&self) -> u64 {
+        self.cycle
+    }
+
+    /// Pin levels after the last edge.
+    pub fn outputs(&self) -> Outputs {
+        self.out
+    }
+
+    pub fn is_powered_down(&self) -> bool {
+        self.power_down
+    }
+
+    /// Number of motors of the variant (TMC4210: 1).
+    pub fn motor_count(&self) -> usize {
+        if self.chip == Chip::Tmc4210 {
+            1
+        } else {
+            3
+        }
+    }
+
+    fn has_pos_comp(&self) -> bool {
+        self.chip != Chip::Tmc428
+    }
+
+    /// Read-only view of a motor's registers and state.
+    pub fn motor(&self, m: usize) -> &Motor {
+        &self.motors[m]
+    }
+
+    /// Read-only view of the global registers.
+    pub fn global(&self) -> &Global {
+        &self.global
+    }
+
+    /// RAM contents (cells 0..127).
+    pub fn ram(&self) -> &[u8; 128] {
+        &self.ram
+    }
+
+    /// The status byte `INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1` of the current state (C10).
+    pub fn status(&self) -> u8 {
+        let (l, _) = self.switches();
+        let mut s = 0u8;
+        for m in 0..3 {
+            let mo = &self.motors[m];
+            s |= ((mo.x_actual == mo.x_target) as u8) << (2 * m);
+            s |= (((l >> m) & 1) as u8) << (2 * m + 1);
+        }
+        s | (self.cdgw() as u8) << 6 | (self.int() as u8) << 7
+    }
+
+    fn cdgw(&self) -> bool {
+        self.global.cw || self.global.dgw
+    }
+
+    /// INT (C64).
+    pub fn int(&self) -> bool {
+        self.motors.iter().any(|m| m.int_flags != 0) || (self.global.pc_i && self.global.pc_m)
+    }
+
+    /// Left and right switch levels of the three motors as bit masks (bit m = motor m) (C60).
+    pub fn switches(&self) -> (u8, u8) {
+        switches::levels(self.chip, &self.global, self.sync.s2)
+    }
+
+    /// The probe bundle of the current state.
+    pub fn probes(&self) -> Probes {
+        let mut p = Probes {
+            prescaler: self.prescaler,
+            power_down: self.power_down as u8,
+            status: self.status(),
+            ..Probes::default()
+        };
+        for (mp, m) in p.motor.iter_mut().zip(self.motors.iter()) {
+            *mp = MotorProbe {
+                x_target: m.x_target,
+                x_actual: m.x_actual,
+                v_internal: m.v,
+                v_target: sext12(m.v_target as u32),
+                a_actual: m.a_actual,
+                ustep: m.ustep as u32,
+                step: m.step as u8,
+                dir: m.dir as u8,
+                pulse_acc: m.acc,
+            };
+        }
+        p.chain.cover_waiting = self.global.cw as u8;
+        p.chain.readback = self.global.readback;
+        p
+    }
+
+    /// One rising edge of CLK (C1).
+    pub fn tick(&mut self, inp: &Inputs) -> Outputs {
+        self.cycle += 1;
+        // Every unit reads the old state; the synchronizers shift last.
+        let pins = self.sync.s2;
+
+        // µC SPI slave (C10–C13).
+        let ev = self.spi.step(&self.sync);
+        let mut wake = false;
+        let mut exec = None;
+        match ev {
+            SpiEvent::Select => {
+                let st = self.status();
+                self.spi.load_status(st);
+                wake = self.power_down;
+            }
+            SpiEvent::ReadAddress(a7) => {
+                let d = self.read_register(a7);
+                self.spi.load_data(d);
+            }
+            SpiEvent::Execute(d) => exec = Some(d),
+            SpiEvent::Deselect | SpiEvent::None => {}
+        }
+
+        let int_old = self.int();
+        let mut events = [0u8; 3];
+        let mut pc_event = false;
+        let match_old = self.pos_match();
+        if !self.power_down {
+            self.motion(pins, &mut events);
+            pc_event = match_old && !self.global.pc_match_prev;
+            self.global.pc_match_prev = match_old;
+            self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
+        }
+
+        if let Some(d) = exec {
+            self.execute(d);
+        }
+        // C3: events set after the µC's clear, then the mask forces.
+        for (m, e) in self.motors.iter_mut().zip(events) {
+            m.int_flags = (m.int_flags | e) & m.int_mask;
+        }
+        if pc_event && self.global.pc_m {
+            self.global.pc_i = true;
+        }
+        if !self.global.pc_m {
+            self.global.pc_i = false;
+        }
+        if wake {
+            self.power_down = false;
+        }
+
+        self.sync.shift(sync::pack(inp));
+
+        // Registered outputs.
+        let sdo = self.spi.sdo();
+        let data_on_nint = self.spi.active && !(self.has_pos_comp() && self.global.ifc(f::SDO_INT));
+        self.out.nint_sdo_c = if data_on_nint { sdo } else { !int_old };
+        if self.has_pos_comp() {
+            self.out.sdoz_c = sdo;
+            self.out.sdoz_c_oe = self.spi.active;
+            self.out.poscmp = match_old;
+        }
+        self.out
+    }
+
+    /// Position compare match of the current state (C65).
+    fn pos_match(&self) -> bool {
+        if !self.has_pos_comp() {
+            return false;
+        }
+        let sel = (f::POS_COMP_SEL.get(self.global.ifconf) as usize).min(2);
+        self.motors[sel].x_actual == self.global.pos_comp
+    }
+
+    /// The motion core for one cycle (C40–C63), from the old state.
+    fn motion(&mut self, pins: u16, events: &mut [u8; 3]) {
+        let phase = self.prescaler & 31;
+        let frame = self.prescaler >> 5;
+        let (left, right) = switches::levels(self.chip, &self.global, pins);
+        let n = self.motor_count();
+        for (i, m) in self.motors.iter_mut().enumerate().take(n) {
+            // Target snapshot (C41).
+            if phase == PHASE_SNAPSHOT[i] {
+                m.vt = m.target_velocity();
+            }
+            let l = (left >> i) & 1 != 0;
+            let r = (right >> i) & 1 != 0;
+            let x = sext24(m.x_actual);
+            let tol_ok = x.unsigned_abs() < m.dx_ref_tolerance as u32;
+            let rnl = m.ref_conf & REF_RNL != 0;
+            let sel = if rnl { r } else { l };
+            let moving_neg = m.v < 0 || (m.v == 0 && m.vt < 0);
+            let moving_pos = m.v > 0 || (m.v == 0 && m.vt > 0);
+            let stop_l = m.ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && !(tol_ok && !rnl);
+            let stop_r = m.ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && !(tol_ok && rnl);
+            let stop = stop_l || stop_r;
+            let soft = m.ref_conf & SOFT_STOP != 0;
+            let hard_stop = stop && !soft;
+            let at_target = m.x_actual == m.x_target;
+            let stop_at_target = m.rm <= SOFT_MODE && at_target && (m.v.unsigned_abs() >> 8) <= m.v_min as u32;
+
+            // Interrupt conditions (C63).
+            let cond = (at_target as u8) * INT_POS_END
+                | ((sel && !tol_ok) as u8) * INT_REF_WRONG
+                | ((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS
+                | (stop as u8) * INT_STOP
+                | (!l as u8) * INT_STOP_LEFT_LOW
+                | (!r as u8) * INT_STOP_RIGHT_LOW
+                | (l as u8) * INT_STOP_LEFT_HIGH
+                | (r as u8) * INT_STOP_RIGHT_HIGH;
+            events[i] = cond & !m.cond_prev;
+            m.cond_prev = cond;
+
+            // Latch (C62).
+            if m.lp && m.v != 0 && sel != m.ref_prev {
+                m.x_latched = m.x_actual;
+                m.lp = false;
+            }
+            m.ref_prev = sel;
+
+            let v_old = m.v;
+            // Ramp tick (C51).
+            if phase == PHASE_RAMP && m.rm != HOLD_MODE && (frame & ((1 << m.ramp_div) - 1)) == (1 << m.ramp_div) - 1 {
+                let t = if stop && soft { 0 } else { m.vt * 256 };
+                let v_new = Motor::approach(v_old, t, m.a_max);
+                m.a_actual = v_new - v_old;
+                m.v = v_new;
+                if m.rm <= SOFT_MODE {
+                    m.v_target = (m.vt as u32 & 0xFFF) as u16;
+                }
+            }
+            if stop_at_target || hard_stop {
+                m.v = 0;
+            }
+            // Pulse tick (C53): velocity taken as 0 when a stop holds this cycle.
+            m.step = false;
+            if phase == PHASE_PULSE && (frame & ((1 << m.pulse_div) - 1)) == (1 << m.pulse_div) - 1 {
+                let v_eff = if stop_at_target || hard_stop { 0 } else { v_old };
+                let sum = m.acc + (v_eff.unsigned_abs() >> 8) as u16;
+                m.acc = sum & 0x7FF;
+                if sum > 0x7FF {
+                    m.do_step(v_eff < 0);
+                }
+            }
+        }
+    }
+
+    /// Register read data (24 bits) of a 7-bit address in the current state (C20–C31).
+    pub fn read_register(&self, a7: u8) -> u32 {
+        let Some((reg, motor)) = regmap::lookup(self.chip, a7) else {
+            return 0;
+        };
+        let g = &self.global;
+        match Addr::from_a7(a7) {
+            Addr::Ram(a) => ram::read_word(&self.ram, a),
+            Addr::Motor(_, idx) => {
+                let m = &self.motors[motor.unwrap_or(0) as usize];
+                match idx {
+                    0 => m.x_target,
+                    1 => m.x_actual,
+                    2 => m.v_min as u32,
+                    3 => m.v_max as u32,
+                    4 => m.v_target as u32,
+                    5 => f::V_ACTUAL.put(m.v_actual() as u32),
+                    6 => m.a_max as u32,
+                    7 => f::A_ACTUAL.put(m.a_actual as u32),
+                    8 => {
+                        f::IS_AGTAT.put(m.is_agtat as u32)
+                            | f::IS_ALEAT.put(m.is_aleat as u32)
+                            | f::IS_V0.put(m.is_v0 as u32)
+                            | f::A_THRESHOLD.put(m.a_threshold as u32)
+                    }
+                    9 => f::PMUL.put(0x80 | m.pmul as u32) | f::PDIV.put(m.pdiv as u32),
+                    10 => f::LP.put(m.lp as u32) | ((m.ref_conf as u32) << 8) | f::RM.put(m.rm as u32),
+                    11 => f::INTERRUPT_MASK.put(m.int_mask as u32) | f::INTERRUPT_FLAGS.put(m.int_flags as u32),
+                    12 => f::PULSE_DIV.put(m.pulse_div as u32) | f::RAMP_DIV.put(m.ramp_div as u32) | f::USRS.put(m.usrs as u32),
+                    13 => m.dx_ref_tolerance as u32,
+                    14 => m.x_latched,
+                    15 => m.ustep as u32,
+                    _ => 0,
+                }
+            }
+            Addr::Global(jdx) => match jdx {
+                0 => (g.readback & 0xFF_FFFF) as u32,
+                1 => ((g.readback >> 24) & 0xFF_FFFF) as u32,
+                2 => {
+                    f::COVER_WAITING.put(g.cw as u32)
+                        | f::COVER_POS.put((g.cover_pos as u32 + 1) & 63)
+                        | f::COVER_LEN.put(g.cover_len as u32)
+                }
+                3 => g.cover_datagram,
+                4 => g.ifconf,
+                5 => g.pos_comp,
+                6 => f::POS_COMP_M.put(g.pc_m as u32) | f::POS_COMP_I.put(g.pc_i as u32),
+                9 => TYPE_VERSION,
+                14 => {
+                    let (l, r) = self.switches();
+                    let mut w = 0;
+                    for m in 0..3 {
+                        w |= (((r >> m) & 1) as u32) << (2 * m) | (((l >> m) & 1) as u32) << (2 * m + 1);
+                    }
+                    w
+                }
+                15 => g.gconf & reg.writable_mask(),
+                _ => 0,
+            },
+        }
+    }
+
+    /// Executes a 32-bit datagram (C12): a register or RAM write; reads have no side effects.
+    fn execute(&mut self, d: u32) {
+        if (d >> 24) & 1 == 1 {
+            return;
+        }
+        self.write_register(((d >> 25) & 0x7F) as u8, d & 0xFF_FFFF);
+    }
+
+    /// A µC write of `data` (24 bits) to a 7-bit address, with every side effect (C20–C31).
+    pub fn write_register(&mut self, a7: u8, data: u32) {
+        let Some((reg, motor)) = regmap::lookup(self.chip, a7) else {
+            return;
+        };
+        let data = data & 0xFF_FFFF;
+        match Addr::from_a7(a7) {
+            Addr::Ram(a) => ram::write_word(&mut self.ram, a, data),
+            Addr::Motor(_, idx) => {
+                let m = &mut self.motors[motor.unwrap_or(0) as usize];
+                match idx {
+                    0 => m.x_target = data,
+                    1 => m.x_actual = data,
+                    2 => m.v_min = f::V_MIN.get(data) as u16,
+                    3 => m.v_max = f::V_MAX.get(data) as u16,
+                    4 => m.v_target = f::V_TARGET.get(data) as u16,
+                    5 => {
+                        // C23: V := w·256, −2048 as −2047.
+                        let w = (f::V_ACTUAL.value(data) as i32).max(-2047);
+                        m.v = w * 256;
+                    }
+                    6 => m.a_max = f::A_MAX.get(data) as u16,
+                    7 => {}
+                    8 => {
+                        m.is_agtat = f::IS_AGTAT.get(data) as u8;
+                        m.is_aleat = f::IS_ALEAT.get(data) as u8;
+                        m.is_v0 = f::IS_V0.get(data) as u8;
+                        m.a_threshold = f::A_THRESHOLD.get(data) as u16;
+                    }
+                    9 => {
+                        m.pmul = (f::PMUL.get(data) & 0x7F) as u8;
+                        m.pdiv = f::PDIV.get(data) as u8;
+                    }
+                    10 => {
+                        m.ref_conf = ((data >> 8) & 0xF) as u8;
+                        m.rm = f::RM.get(data) as u8;
+                    }
+                    11 => {
+                        m.int_mask = f::INTERRUPT_MASK.get(data) as u8;
+                        m.int_flags &= !(f::INTERRUPT_FLAGS.get(data) as u8);
+                        m.int_flags &= m.int_mask;
+                    }
+                    12 => {
+                        m.pulse_div = f::PULSE_DIV.get(data) as u8;
+                        m.ramp_div = f::RAMP_DIV.get(data) as u8;
+                        m.usrs = f::USRS.get(data) as u8;
+                    }
+                    13 => m.dx_ref_tolerance = f::DX_REF_TOLERANCE.get(data) as u16,
+                    14 => m.lp = true,
+                    15 => m.ustep = f::USTEP_COUNT.get(data) as u8,
+                    _ => {}
+                }
+            }
+            Addr::Global(jdx) => {
+                let g = &mut self.global;
+                match jdx {
+                    0 | 1 => g.dgw = true,
+                    2 => {
+                        g.cover_pos = f::COVER_POS.get(data) as u8;
+                        g.cover_len = f::COVER_LEN.get(data) as u8;
+                    }
+                    3 => {
+                        g.cover_datagram = data;
+                        g.cw = true;
+                    }
+                    4 => g.ifconf = data & reg.writable_mask(),
+                    5 => g.pos_comp = data,
+                    6 => {
+                        g.pc_m = f::POS_COMP_M.get(data) != 0;
+                        if f::POS_COMP_I.get(data) != 0 || !g.pc_m {
+                            g.pc_i = false;
+                        }
+                    }
+                    8 => self.power_down = true,
+                    15 => g.gconf = data & reg.writable_mask(),
+                    _ => {}
+                }
+            }
+        }
+    }
+}

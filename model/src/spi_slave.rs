@@ -1,0 +1,83 @@
+//! µC SPI slave (TMC428 §6.2, TMC429 §6.2; contract C10–C13).
+
+use crate::sync::{bit, SyncBank};
+
+/// What the slave asks of the chip in one cycle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SpiEvent {
+    None,
+    /// nSCS_C fell: load the status byte (and wake from power down).
+    Select,
+    /// The 8th bit of a read arrived: load the read data of this address.
+    ReadAddress(u8),
+    /// nSCS_C rose after exactly 32 bits: execute this datagram.
+    Execute(u32),
+    /// nSCS_C rose after a frame that was not 32 bits: nothing executes.
+    Deselect,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SpiSlave {
+    /// Input shift register (bits shifted in so far, last one in bit 0).
+    pub shift_in: u32,
+    /// Output shift register; bit 31 is on the data output.
+    pub shift_out: u32,
+    /// Bits received in this frame (saturates at 63).
+    pub count: u8,
+    /// Synchronized nSCS_C is low (frame in progress).
+    pub active: bool,
+}
+
+impl SpiSlave {
+    pub fn reset() -> Self {
+        SpiSlave { shift_in: 0, shift_out: 0, count: 0, active: false }
+    }
+
+    /// One CLK edge, from the synchronizer state before the edge (`s`). Returns what the chip must
+    /// do this cycle; the caller loads the status byte or read data with [`SpiSlave::load_status`]
+    /// and [`SpiSlave::load_data`].
+    #[inline]
+    pub fn step(&mut self, s: &SyncBank) -> SpiEvent {
+        self.active = !s.level(bit::NSCS_C);
+        if s.fell(bit::NSCS_C) {
+            self.count = 0;
+            return SpiEvent::Select; // C13: a coinciding SCK_C edge is ignored
+        }
+        if s.rose(bit::NSCS_C) {
+            let ev = if self.count == 32 { SpiEvent::Execute(self.shift_in) } else { SpiEvent::Deselect };
+            return ev;
+        }
+        if !self.active {
+            return SpiEvent::None;
+        }
+        if s.rose(bit::SCK_C) {
+            self.shift_in = (self.shift_in << 1) | s.level(bit::SDI_C) as u32;
+            if self.count < 63 {
+                self.count += 1;
+            }
+            if self.count == 8 && self.shift_in & 1 == 1 {
+                return SpiEvent::ReadAddress(((self.shift_in >> 1) & 0x7F) as u8);
+            }
+        } else if s.fell(bit::SCK_C) && self.count > 0 {
+            // The first falling edge presents bit 31, which is already out (SPI mode 3).
+            self.shift_out <<= 1;
+        }
+        SpiEvent::None
+    }
+
+    pub fn load_status(&mut self, status: u8) {
+        self.shift_out = (status as u32) << 24;
+    }
+
+    /// Loads read data after the 8th rising SCK_C edge: seven falling edges have shifted the
+    /// register by then, so data bit 23 goes to bit 30 and leaves on the 8th falling edge.
+    pub fn load_data(&mut self, data: u32) {
+        self.shift_out = (self.shift_out & 0x8000_0000) | ((data & 0xFF_FFFF) << 7);
+    }
+
+    /// The data output bit.
+    #[inline]
+    pub fn sdo(&self) -> bool {
+        self.shift_out >> 31 != 0
+    }
+}

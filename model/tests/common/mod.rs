@@ -1,0 +1,63 @@
+//! Helpers shared by the model's integration tests: register writes go through the pins.
+#![allow(dead_code)]
+
+use tmc429_model::host::Host;
+use tmc429_model::regmap::{global_a7, motor_a7};
+use tmc429_model::Chip;
+
+pub const X_TARGET: u8 = 0;
+pub const X_ACTUAL: u8 = 1;
+pub const V_MIN: u8 = 2;
+pub const V_MAX: u8 = 3;
+pub const V_TARGET: u8 = 4;
+pub const V_ACTUAL: u8 = 5;
+pub const A_MAX: u8 = 6;
+pub const A_ACTUAL: u8 = 7;
+pub const CURRENT: u8 = 8;
+pub const PMUL_PDIV: u8 = 9;
+pub const REF_CONF_RM: u8 = 10;
+pub const INTERRUPT: u8 = 11;
+pub const CLK_CONFIG: u8 = 12;
+pub const DX_REF_TOL: u8 = 13;
+pub const X_LATCHED: u8 = 14;
+pub const USTEP_COUNT: u8 = 15;
+
+pub fn host(chip: Chip) -> Host {
+    Host::new(chip)
+}
+
+pub fn wr(h: &mut Host, m: u8, idx: u8, data: u32) {
+    h.write(motor_a7(m, idx), data);
+}
+
+pub fn rd(h: &mut Host, m: u8, idx: u8) -> u32 {
+    h.read(motor_a7(m, idx))
+}
+
+pub fn wrg(h: &mut Host, jdx: u8, data: u32) {
+    h.write(global_a7(jdx), data);
+}
+
+pub fn rdg(h: &mut Host, jdx: u8) -> u32 {
+    h.read(global_a7(jdx))
+}
+
+/// Sign-extends a 24-bit register value.
+pub fn s24(v: u32) -> i32 {
+    ((v << 8) as i32) >> 8
+}
+
+/// Sign-extends a 12-bit register value.
+pub fn s12(v: u32) -> i32 {
+    ((v << 20) as i32) >> 20
+}
+
+/// Configures motor `m` for motion: dividers, v_min/v_max, a_max and pmul/pdiv, ramp mode.
+pub fn motion_setup(h: &mut Host, m: u8, pulse_div: u32, ramp_div: u32, v_min: u32, v_max: u32, a_max: u32, pmul_pdiv: u32, rm: u32) {
+    wr(h, m, CLK_CONFIG, pulse_div << 12 | ramp_div << 8);
+    wr(h, m, V_MIN, v_min);
+    wr(h, m, V_MAX, v_max);
+    wr(h, m, A_MAX, a_max);
+    wr(h, m, PMUL_PDIV, pmul_pdiv);
+    wr(h, m, REF_CONF_RM, rm);
+}

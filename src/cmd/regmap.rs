@@ -1,0 +1,35 @@
+//! `tmc429 regmap`: the register map from its one source.
+
+use std::io::Write;
+
+use tmc429_model::regmap_render;
+
+use crate::{Outcome, UserError};
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Format {
+    Md,
+    C,
+    Json,
+}
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Output format.
+    #[arg(long, value_enum, default_value = "md")]
+    pub format: Format,
+}
+
+pub fn run(a: Args) -> Result<Outcome, UserError> {
+    let text = match a.format {
+        Format::Md => regmap_render::markdown(),
+        Format::C => regmap_render::c_header(),
+        Format::Json => regmap_render::json(),
+    };
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()) {
+        Ok(()) => Ok(Outcome::Ok),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Outcome::Ok),
+        Err(e) => Err(UserError(format!("writing output: {e}"))),
+    }
+}
