@@ -4,7 +4,8 @@
 // From the synchronized pins: inv_ref inverts every REF/REFR input first. refmux = 0,
 // mot1r = 0: Ln = REFn, and on the TMC429 with en_refr = 1 Rn = REFRn, else no right
 // switches. mot1r = 1: L1 = REF1, L2 = REF2, R1 = REF3, motor 3 has no switches. A missing
-// switch reads inactive (0). refmux = 1 samples the switches through the 74HC157 on
+// switch reads inactive (0). TMC4210: L1 = REF_L (REF1), L2 = GP_IN (REF2), R1 = REF_R
+// (REF3) with mot1r = 1, no refmux and no REFR inputs. refmux = 1 samples the switches through the 74HC157 on
 // nSCS_S, which belongs to the driver chain; until the chain is built L and R read 0 with
 // refmux = 1 (the co-simulation keeps refmux = 0, see docs/cosim.md).
 `default_nettype none
@@ -25,7 +26,11 @@ module tmc429_refsw #(
     wire [2:0] rfr = refr_q ^ {3{inv_ref}};
 
     always @(*) begin
-        if (refmux) begin
+        if (CHIP == 2) begin
+            // TMC4210: REF_L = REF1 (l1), GP_IN = REF2 (read as l2), REF_R = REF3 with mot1r
+            l = {1'b0, rf[1], rf[0]};
+            r = {2'b00, rf[2] & mot1r};
+        end else if (refmux) begin
             l = 3'b000;
             r = 3'b000;
         end else if (mot1r) begin

@@ -19,13 +19,12 @@ module tmc429_regfile #(
     output reg  [23:0] rd_data,
     input  wire [2:0]  ref_q,         // synchronized REF3..1
     input  wire [2:0]  refr_q,        // synchronized REFR3..1
-    output wire        run,           // 0 while powered down
     output wire [7:0]  status,        // INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1
-    output wire        int_o,         // INT (high active)
+    output reg         nint_q,        // nINT, registered from the state before the edge (C11)
     output wire        sdo_int,       // if_configuration sdo_int (TMC429/TMC4210)
-    output wire        poscmp,        // position compare match (C65)
+    output reg         poscmp_q,      // position compare match, registered (C65)
     output reg         pd,            // powered down
-    output reg  [31:0] prescaler,     // free-running CLK counter (C40)
+    output reg  [19:0] prescaler,     // free-running CLK counter (C40), 20 bits as the model
     // probes
     output wire [23:0] m0_x_target, m1_x_target, m2_x_target,
     output wire [23:0] m0_x_actual, m1_x_actual, m2_x_actual,
@@ -35,6 +34,7 @@ module tmc429_regfile #(
 );
     localparam HAS_CHAIN = (CHIP != 2);   // JDX 0..3 (driver chain), TMC4210: absent
     localparam HAS_429   = (CHIP != 0);   // JDX 4, 5, 6, 9
+    localparam HAS_RAM   = (CHIP != 2);   // TMC4210: no driver chain, no RAM
 
     // ---- datagram decode ------------------------------------------------------------
     wire [6:0]  a7    = cmd[31:25];
@@ -42,7 +42,7 @@ module tmc429_regfile #(
     wire [23:0] wdata = cmd[23:0];
     wire        wr_g  = wr & (a7[6:4] == 3'b011);       // global register
     wire [3:0]  jdx   = a7[3:0];
-    wire        wr_ram = wr & a7[6];
+    wire        wr_ram = wr & a7[6] & HAS_RAM;
 
     // ---- global registers -----------------------------------------------------------
     reg        dw;             // datagram waiting (JDX 0/1 write), CDGW
@@ -57,7 +57,10 @@ module tmc429_regfile #(
     reg [7:0]  clk2_div;
     reg        cont_update, refmux, mot1r;
 
-    assign run = ~pd | frame_start;
+    // everything behind the SPI slave stops while powered down; the waking edge itself
+    // still counts as powered down (the wake-up takes effect in its new state)
+    wire run = ~pd;
+    wire int_o;
 
     // ---- switches -------------------------------------------------------------------
     wire [2:0] sw_l, sw_r;
@@ -108,7 +111,6 @@ module tmc429_regfile #(
     wire pc_m_nx  = w_pcint ? wdata[8] : pc_m;
     wire pc_w1c   = w_pcint & wdata[0];
 
-    assign poscmp  = pc_match;
     assign sdo_int = HAS_429 && if_conf[1];
     assign int_o   = (|irq) | (pc_i & pc_m);
     // RSn = Ln ([429] §6.2.2.2, C60)
@@ -129,10 +131,14 @@ module tmc429_regfile #(
             gp_low <= 8'd0;  clk2_div <= 8'd15;
             cont_update <= 1'b0;  refmux <= 1'b0;  mot1r <= 1'b0;
             pd <= 1'b0;
-            prescaler <= 32'd0;
+            prescaler <= 20'd0;
+            nint_q <= 1'b1;
+            poscmp_q <= HAS_429;
         end else begin
+            nint_q   <= ~int_o;
+            poscmp_q <= pc_match;
             if (run) begin
-                prescaler <= prescaler + 32'd1;
+                prescaler <= prescaler + 20'd1;
                 pc_hist   <= pc_match;
             end
             pc_m <= pc_m_nx;
@@ -181,7 +187,7 @@ module tmc429_regfile #(
     always @(*) begin
         rd_data = 24'd0;
         if (rd_addr[6]) begin
-            rd_data = {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]};
+            rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
         end else if (rd_addr[5:4] == 2'b00) begin
             rd_data = m_rdata[0];
         end else if (rd_addr[5:4] == 2'b01) begin

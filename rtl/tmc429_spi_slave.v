@@ -4,8 +4,9 @@
 // falling edge of nSCS_C: the bit counter clears and the status byte is loaded into
 // bits 31..24 of the output register. Each synchronized rising SCK_C edge while nSCS_C
 // is low shifts SDI_C in (MSB first, counter saturates at 63); when the 8th bit is in
-// and RW = 1 the read data is loaded into bits 23..0 of the output register in the same
-// cycle. Each synchronized falling SCK_C edge shifts the output register left. An SCK_C
+// and RW = 1 the read data is loaded in the same cycle, where data bit 23 leaves on the
+// next falling edge. Each synchronized falling SCK_C edge after the first bit shifts the
+// output register left (the first falling edge presents bit 31, already on the pin). An SCK_C
 // edge in the cycle of the nSCS_C falling edge is ignored (C13). At the synchronized
 // rising edge of nSCS_C a frame of exactly 32 bits is executed (`exec` pulse).
 `default_nettype none
@@ -37,11 +38,11 @@ module tmc429_spi_slave (
     /* verilator lint_on UNUSEDSIGNAL */
 
     tmc429_sync #(.W(1), .RST(1'b1)) u_sync_nscs (
-        .clk(clk), .rst(rst), .en(1'b1), .d(nscs_c), .q(nscs_q), .h(nscs_h));
+        .clk(clk), .rst(rst), .d(nscs_c), .q(nscs_q), .h(nscs_h));
     tmc429_sync #(.W(1), .RST(1'b1)) u_sync_sck (
-        .clk(clk), .rst(rst), .en(1'b1), .d(sck_c), .q(sck_q), .h(sck_h));
+        .clk(clk), .rst(rst), .d(sck_c), .q(sck_q), .h(sck_h));
     tmc429_sync #(.W(1), .RST(1'b0)) u_sync_sdi (
-        .clk(clk), .rst(rst), .en(1'b1), .d(sdi_c), .q(sdi_q), .h(sdi_h));
+        .clk(clk), .rst(rst), .d(sdi_c), .q(sdi_q), .h(sdi_h));
 
     reg [31:0] in_sr;
     reg [31:0] out_sr;
@@ -51,7 +52,8 @@ module tmc429_spi_slave (
     wire nscs_rise = nscs_q & ~nscs_h;
     wire sel       = ~nscs_q & ~nscs_h;   // low, and not the cycle of the falling edge (C13)
     wire sck_rise  = sel & sck_q & ~sck_h;
-    wire sck_fall  = sel & ~sck_q & sck_h;
+    // the first falling edge presents bit 31, which is already out (SPI mode 3)
+    wire sck_fall  = sel & ~sck_q & sck_h & (cnt != 6'd0);
 
     wire [31:0] in_next = {in_sr[30:0], sdi_q};
     // the 8th bit arrives now and it is a read
@@ -80,7 +82,7 @@ module tmc429_spi_slave (
             end
             if (rd_load)
                 // after 7 falling edges the reply's bit 23 sits at bit 30
-                out_sr <= {out_sr[31:31], rd_data, out_sr[6:0]};
+                out_sr <= {out_sr[31], rd_data, 7'd0};
             else if (sck_fall)
                 out_sr <= {out_sr[30:0], 1'b0};
         end

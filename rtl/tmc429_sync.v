@@ -2,7 +2,7 @@
 //
 // An input level applied before CLK edge t appears on `q` after edge t+1 and on `h`
 // after edge t+2; an edge is detected between `q` and `h`, so it is acted on at edge
-// t+2. `en` = 0 freezes all three flops (power down, C66).
+// t+2. The synchronizers run in power down as well (only the units behind them stop).
 `default_nettype none
 
 module tmc429_sync #(
@@ -11,7 +11,6 @@ module tmc429_sync #(
 ) (
     input  wire         clk,
     input  wire         rst,
-    input  wire         en,
     input  wire [W-1:0] d,
     output reg  [W-1:0] q,
     output reg  [W-1:0] h
@@ -23,7 +22,7 @@ module tmc429_sync #(
             s1 <= RST;
             q  <= RST;
             h  <= RST;
-        end else if (en) begin
+        end else begin
             s1 <= d;
             q  <= s1;
             h  <= q;

@@ -63,8 +63,7 @@ module tmc429_top #(
     output wire        probe_power_down,
     output wire [7:0]  probe_status
 );
-    // ---- synchronizers of the non-SPI inputs (C4), frozen in power down ------------------
-    wire       run;
+    // ---- synchronizers of the non-SPI inputs (C4) -----------------------------------------
     wire [2:0] ref_q, refr_q;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [6:0] in_h;    // history flops: the edge detectors live in the motion core
@@ -72,7 +71,7 @@ module tmc429_top #(
     /* verilator lint_on UNUSEDSIGNAL */
 
     tmc429_sync #(.W(7), .RST(7'b1110000)) u_sync_in (
-        .clk(clk), .rst(rst), .en(run),
+        .clk(clk), .rst(rst),
         .d({refr3, refr2, refr1, ref3, ref2, ref1, sdi_s}),
         .q({refr_q, ref_q, sdi_s_q}), .h(in_h));
 
@@ -91,8 +90,8 @@ module tmc429_top #(
         .active(active), .sdo(sdo));
 
     // ---- register file ---------------------------------------------------------------------
-    wire        int_o, sdo_int, pc_match, pd;
-    wire [31:0] prescaler;
+    wire        nint_q, sdo_int, poscmp_q, pd;
+    wire [19:0] prescaler;
     wire [11:0] v_act0, v_act1, v_act2;
 
     tmc429_regfile #(.CHIP(CHIP)) u_regs (
@@ -100,8 +99,8 @@ module tmc429_top #(
         .exec(exec), .cmd(cmd), .frame_start(frame_start),
         .rd_addr(rd_addr), .rd_data(rd_data),
         .ref_q(ref_q), .refr_q(refr_q),
-        .run(run), .status(status), .int_o(int_o), .sdo_int(sdo_int),
-        .poscmp(pc_match), .pd(pd), .prescaler(prescaler),
+        .status(status), .nint_q(nint_q), .sdo_int(sdo_int),
+        .poscmp_q(poscmp_q), .pd(pd), .prescaler(prescaler),
         .m0_x_target(probe_m0_x_target), .m1_x_target(probe_m1_x_target),
         .m2_x_target(probe_m2_x_target),
         .m0_x_actual(probe_m0_x_actual), .m1_x_actual(probe_m1_x_actual),
@@ -112,12 +111,13 @@ module tmc429_top #(
         .m0_ustep(probe_m0_ustep), .m1_ustep(probe_m1_ustep), .m2_ustep(probe_m2_ustep));
 
     // ---- pins (C11, C90) --------------------------------------------------------------------
-    // While a frame is active the pin carries the data bit, otherwise nINT; with sdo_int
+    // While a frame is active the pin carries the data bit, otherwise nINT (registered: INT
+    // of the state before the edge); with sdo_int
     // (TMC429/TMC4210) it is nINT always and the data goes only to SDOZ_C.
-    assign nint_sdo_c = (active & ~sdo_int) ? sdo : ~int_o;
+    assign nint_sdo_c = (active & ~sdo_int) ? sdo : nint_q;
     assign sdoz_c     = (CHIP == 0) ? 1'b0 : sdo;
     assign sdoz_c_oe  = (CHIP == 0) ? 1'b0 : active;
-    assign poscmp     = pc_match;
+    assign poscmp     = poscmp_q;
 
     // driver chain not built yet: idle levels
     assign nscs_s   = 1'b1;
@@ -146,7 +146,7 @@ module tmc429_top #(
     assign probe_chain_pending = 1'b0;
     assign probe_chain_cover_waiting = 1'b0;
     assign probe_chain_readback = 48'd0;
-    assign probe_prescaler = prescaler;
+    assign probe_prescaler = {12'd0, prescaler};
     assign probe_power_down = pd;
     assign probe_status = status;
 endmodule

@@ -21,6 +21,8 @@ enum Command {
     Spi(cmd::spi::Args),
     /// Print the register map (Markdown, C header or JSON).
     Regmap(cmd::regmap::Args),
+    /// Run the golden model and the Verilated RTL in lock-step on random stimulus.
+    Cosim(cmd::cosim::Args),
 }
 
 /// Exit status of a command.
@@ -44,6 +46,7 @@ fn main() -> ExitCode {
     let res = match cli.command {
         Command::Spi(a) => cmd::spi::run(a),
         Command::Regmap(a) => cmd::regmap::run(a),
+        Command::Cosim(a) => cmd::cosim::run(a),
     };
     match res {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,

@@ -1,4 +1,5 @@
 //! One module per subcommand.
 pub mod common;
+pub mod cosim;
 pub mod regmap;
 pub mod spi;
