@@ -223,6 +223,7 @@ enum Kind {
     Pins,
     Idle,
     PowerDown,
+    Meet,
 }
 
 /// A reproducible stream of transactions for one chip, from a seed.
@@ -268,6 +269,7 @@ impl Stimulus {
             14 => Just(Kind::Pins),
             4 => Just(Kind::Idle),
             2 => Just(Kind::PowerDown),
+            2 => Just(Kind::Meet),
         ]);
         match kind {
             Kind::Frame => {
@@ -294,6 +296,32 @@ impl Stimulus {
                 let sleep = self.draw(prop_oneof![1 => 1u32..20, 2 => 20u32..2000]);
                 self.pending.push_back(Txn::Idle(sleep));
                 Txn::Frame(Frame::write(0x38, data))
+            }
+            Kind::Meet => {
+                // A directed sequence: a motor's x_actual moves onto x_target and onto
+                // pos_comp (POS_END, REF_MISS at 0, position compare), then the flags are read.
+                let m = self.draw(0..motors(self.chip) as u8);
+                let v = self.draw(prop_oneof![1 => Just(0u32), 3 => 0u32..0x100_0000]);
+                let mask = self.draw(any::<u8>()) as u32;
+                let w = |a7: u8, d: u32| Txn::Frame(Frame::write(a7, d));
+                let mut seq = vec![
+                    w(m << 4 | 11, mask << 8 | 0xFF),
+                    w(m << 4, (v + 1) & 0xFF_FFFF),
+                    w(m << 4 | 1, v ^ 0x40),
+                ];
+                if self.chip != Chip::Tmc428 {
+                    seq.push(w(0x36, 0x100)); // pos_comp_int: M = 1
+                    seq.push(w(0x35, v));     // pos_comp
+                }
+                seq.push(w(m << 4 | 1, v));   // x_actual = pos_comp
+                seq.push(w(m << 4, v));       // x_target = x_actual
+                seq.push(Txn::Frame(Frame::read(m << 4 | 11)));
+                if self.chip != Chip::Tmc428 {
+                    seq.push(Txn::Frame(Frame::read(0x36)));
+                }
+                let first = seq.remove(0);
+                self.pending.extend(seq);
+                first
             }
         }
     }
