@@ -23,6 +23,8 @@ enum Command {
     Regmap(cmd::regmap::Args),
     /// Run the golden model and the Verilated RTL in lock-step on random stimulus.
     Cosim(cmd::cosim::Args),
+    /// TMCL module layer: serve a virtual TMCM-3110, assemble and run TMCL programs.
+    Tmcl(cmd::tmcl::Args),
 }
 
 /// Exit status of a command.
@@ -47,6 +49,7 @@ fn main() -> ExitCode {
         Command::Spi(a) => cmd::spi::run(a),
         Command::Regmap(a) => cmd::regmap::run(a),
         Command::Cosim(a) => cmd::cosim::run(a),
+        Command::Tmcl(a) => cmd::tmcl::run(a),
     };
     match res {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,

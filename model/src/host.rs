@@ -8,7 +8,7 @@ use crate::{Chip, Inputs, Outputs, Tmc429};
 pub const MIN_SCK_HALF: u32 = 3;
 
 /// Called after every CLK edge with the chip, the pins applied and the outputs.
-pub type Observer = Box<dyn FnMut(&Tmc429, &Inputs, &Outputs)>;
+pub type Observer = Box<dyn FnMut(&Tmc429, &Inputs, &Outputs) + Send>;
 
 /// What went wrong configuring the host.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -107,6 +107,14 @@ pub struct Tmc429 {
     pub(crate) global: Global,
     pub(crate) ram: [u8; 128],
     out: Outputs,
+    /// Fast path: the last full evaluation of the motion core changed nothing, and neither its
+    /// inputs (synchronized pins, multiplexed switches) nor any register has changed since, so
+    /// it would change nothing again outside the frame's event phases. Any write to the
+    /// registers or to `Global::mux_switches` must clear it (see [`Tmc429::touch`]).
+    quiet: bool,
+    /// Synchronized pins and multiplexed switches of the last full evaluation.
+    quiet_pins: (u16, u8),
+    fast_path: bool,
 }
 
 impl Tmc429 {
@@ -122,6 +130,9 @@ impl Tmc429 {
             motors: [Motor::reset(); 3],
             global: Global::reset(),
             ram: ram::power_on(chip),
+            quiet: false,
+            quiet_pins: (0, 0),
+            fast_path: true,
             out: Outputs {
                 nint_sdo_c: true,
                 sdoz_c: false,
@@ -198,7 +209,7 @@ impl Tmc429 {
         for m in 0..3 {
             let mo = &self.motors[m];
             s |= ((mo.x_actual == mo.x_target) as u8) << (2 * m);
-            s |= (((l >> m) & 1) as u8) << (2 * m + 1);
+            s |= ((l >> m) & 1) << (2 * m + 1);
         }
         s | (self.cdgw() as u8) << 6 | (self.int() as u8) << 7
     }
@@ -244,7 +255,53 @@ impl Tmc429 {
     }
 
     /// One rising edge of CLK (C1).
+    #[inline]
     pub fn tick(&mut self, inp: &Inputs) -> Outputs {
+        if self.idle_edge(inp) {
+            self.cycle += 1;
+            self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
+            return self.out;
+        }
+        self.full_tick(inp)
+    }
+
+    /// Fast path, exactly equivalent to the full edge (tests/fast_path.rs): the pins are settled
+    /// in the synchronizers (no SPI edge in flight, no switch change), the motion core is quiet,
+    /// and this phase of the frame has nothing to do: no snapshot that changes a target, no ramp
+    /// tick, no pulse tick that adds to an accumulator. Then the edge only advances the counters.
+    #[inline]
+    fn idle_edge(&self, inp: &Inputs) -> bool {
+        if !(self.fast_path
+            && self.quiet
+            && !self.power_down
+            && self.sync.settled()
+            && sync::pack(inp) == self.sync.s1
+            && (self.sync.s2, self.global.mux_switches) == self.quiet_pins)
+        {
+            return false;
+        }
+        let phase = self.prescaler & 31;
+        let frame = self.prescaler >> 5;
+        let n = self.motor_count();
+        let due = |div: u8| frame & ((1 << div) - 1) == (1 << div) - 1;
+        match phase {
+            PHASE_RAMP => !self.motors[..n].iter().any(|m| m.rm != HOLD_MODE && due(m.ramp_div)),
+            PHASE_PULSE => !self.motors[..n].iter().any(|m| due(m.pulse_div) && m.v.unsigned_abs() >= 256),
+            p => match PHASE_SNAPSHOT.iter().position(|&s| s == p) {
+                Some(i) if i < n => self.motors[i].target_velocity() == self.motors[i].vt,
+                _ => true,
+            },
+        }
+    }
+
+    /// Disables the fast paths of [`Tmc429::tick`] (for the test that proves them equivalent).
+    #[doc(hidden)]
+    pub fn set_fast_path(&mut self, on: bool) {
+        self.fast_path = on;
+        self.quiet = false;
+    }
+
+    fn full_tick(&mut self, inp: &Inputs) -> Outputs {
         self.cycle += 1;
         // Every unit reads the old state; the synchronizers shift last.
         let pins = self.sync.s2;
@@ -272,7 +329,15 @@ impl Tmc429 {
         let mut pc_event = false;
         let match_old = self.pos_match();
         if !self.power_down {
-            self.motion(pins, &mut events);
+            let phase = self.prescaler & 31;
+            let event_phase = PHASE_SNAPSHOT.contains(&phase) || phase >= PHASE_RAMP;
+            let inputs = (pins, self.global.mux_switches);
+            if event_phase || !self.quiet || inputs != self.quiet_pins || !self.fast_path {
+                let before = self.motors;
+                self.motion(pins, &mut events);
+                self.quiet = self.motors == before;
+                self.quiet_pins = inputs;
+            }
             pc_event = match_old && !self.global.pc_match_prev;
             self.global.pc_match_prev = match_old;
             self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
@@ -337,8 +402,9 @@ impl Tmc429 {
             let sel = if rnl { r } else { l };
             let moving_neg = m.v < 0 || (m.v == 0 && m.vt < 0);
             let moving_pos = m.v > 0 || (m.v == 0 && m.vt > 0);
-            let stop_l = m.ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && !(tol_ok && !rnl);
-            let stop_r = m.ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && !(tol_ok && rnl);
+            // The tolerance window masks only the REF_RnL-selected switch.
+            let stop_l = m.ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && (rnl || !tol_ok);
+            let stop_r = m.ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && (!rnl || !tol_ok);
             let stop = stop_l || stop_r;
             let soft = m.ref_conf & SOFT_STOP != 0;
             let hard_stop = stop && !soft;
@@ -346,11 +412,7 @@ impl Tmc429 {
             let stop_at_target = m.rm <= SOFT_MODE && at_target && (m.v.unsigned_abs() >> 8) <= m.v_min as u32;
 
             // Interrupt conditions (C63).
-            let cond = (at_target as u8) * INT_POS_END
-                | ((sel && !tol_ok) as u8) * INT_REF_WRONG
-                | ((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS
-                | (stop as u8) * INT_STOP
-                | (!l as u8) * INT_STOP_LEFT_LOW
+            let cond = ((at_target as u8) * INT_POS_END) | (((sel && !tol_ok) as u8) * INT_REF_WRONG) | (((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS) | ((stop as u8) * INT_STOP) | ((!l as u8) * INT_STOP_LEFT_LOW)
                 | (!r as u8) * INT_STOP_RIGHT_LOW
                 | (l as u8) * INT_STOP_LEFT_HIGH
                 | (r as u8) * INT_STOP_RIGHT_HIGH;
@@ -453,6 +515,12 @@ impl Tmc429 {
         }
     }
 
+    /// Marks the motion core's inputs as changed (ends the fast path of [`Tmc429::tick`]).
+    #[inline]
+    pub(crate) fn touch(&mut self) {
+        self.quiet = false;
+    }
+
     /// Executes a 32-bit datagram (C12): a register or RAM write; reads have no side effects.
     fn execute(&mut self, d: u32) {
         if (d >> 24) & 1 == 1 {
@@ -467,6 +535,7 @@ impl Tmc429 {
             return;
         };
         let data = data & 0xFF_FFFF;
+        self.touch();
         match Addr::from_a7(a7) {
             Addr::Ram(a) => ram::write_word(&mut self.ram, a, data),
             Addr::Motor(_, idx) => {

@@ -26,7 +26,7 @@ impl PmulPdiv {
     }
     /// The 24-bit data word of the pmul/pdiv register (IDX 9), when valid.
     pub fn register_value(&self) -> Option<u32> {
-        self.valid().then(|| ((self.p_mul as u32) << 8) | self.p_div as u32)
+        self.valid().then_some(((self.p_mul as u32) << 8) | self.p_div as u32)
     }
 }
 

@@ -214,6 +214,41 @@ pub mod f {
     pub const RAM_EVEN: Field = fld("even", 0, 6, false, Rw, "cell 2*ADDR");
 }
 
+/// IDX of the per-motor registers (TMC428 Table 7-2); the table below uses these.
+pub mod idx {
+    pub const X_TARGET: u8 = 0;
+    pub const X_ACTUAL: u8 = 1;
+    pub const V_MIN: u8 = 2;
+    pub const V_MAX: u8 = 3;
+    pub const V_TARGET: u8 = 4;
+    pub const V_ACTUAL: u8 = 5;
+    pub const A_MAX: u8 = 6;
+    pub const A_ACTUAL: u8 = 7;
+    pub const CURRENT_SCALING: u8 = 8;
+    pub const PMUL_PDIV: u8 = 9;
+    pub const REF_CONF_RM: u8 = 10;
+    pub const INTERRUPT: u8 = 11;
+    pub const CLK_CONFIG: u8 = 12;
+    pub const DX_REF_TOLERANCE: u8 = 13;
+    pub const X_LATCHED: u8 = 14;
+    pub const USTEP_COUNT: u8 = 15;
+}
+
+/// JDX of the global registers (TMC428 §9, TMC429 §8.2); the table below uses these.
+pub mod jdx {
+    pub const DATAGRAM_LOW_WORD: u8 = 0;
+    pub const DATAGRAM_HIGH_WORD: u8 = 1;
+    pub const COVER_POS_LEN: u8 = 2;
+    pub const COVER_DATAGRAM: u8 = 3;
+    pub const IF_CONFIGURATION: u8 = 4;
+    pub const POS_COMP: u8 = 5;
+    pub const POS_COMP_INT: u8 = 6;
+    pub const POWER_DOWN: u8 = 8;
+    pub const TYPE_VERSION: u8 = 9;
+    pub const REF_SWITCHES: u8 = 14;
+    pub const GLOBAL_PARAMETERS: u8 = 15;
+}
+
 use f::*;
 use Space::*;
 
@@ -232,34 +267,34 @@ const fn reg(
 
 /// The register map of the family.
 pub static REGISTERS: &[Register] = &[
-    reg("x_target", Motor, 0, ChipSet::ALL, &[X_TARGET], 0, "", "TMC428 §8.1"),
-    reg("x_actual", Motor, 1, ChipSet::ALL, &[X_ACTUAL], 0, "in RAMP and SOFT mode the motor then drives to x_target", "TMC428 §8.2"),
-    reg("v_min", Motor, 2, ChipSet::ALL, &[V_MIN], 0, "", "TMC428 §8.3"),
-    reg("v_max", Motor, 3, ChipSet::ALL, &[V_MAX], 0, "", "TMC428 §8.4"),
-    reg("v_target", Motor, 4, ChipSet::ALL, &[V_TARGET], 0, "overwritten by the ramp generator at each ramp tick in RAMP and SOFT mode (contract C24)", "TMC428 §8.5"),
-    reg("v_actual", Motor, 5, ChipSet::ALL, &[V_ACTUAL], 0, "a write sets the internal velocity and clears its 8 fraction bits (contract C23)", "TMC428 §8.6"),
-    reg("a_max", Motor, 6, ChipSet::ALL, &[A_MAX], 0, "", "TMC428 §8.7"),
-    reg("a_actual", Motor, 7, ChipSet::ALL, &[A_ACTUAL], 0, "", "TMC428 §8.8"),
-    reg("current_scaling", Motor, 8, ChipSet::NOT_4210, &[IS_AGTAT, IS_ALEAT, IS_V0, A_THRESHOLD], 0, "", "TMC428 §8.9"),
-    reg("pmul_pdiv", Motor, 9, ChipSet::ALL, &[PMUL, PDIV], 0x8000, "bit 15 reads 1 (contract C22)", "TMC428 §8.10"),
-    reg("ref_conf_rm", Motor, 10, ChipSet::ALL, &[LP, REF_RNL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L, RM], 0, "", "TMC428 §8.11, §8.12"),
-    reg("interrupt", Motor, 11, ChipSet::ALL, &[INTERRUPT_MASK, INTERRUPT_FLAGS], 0, "flags clear where 1 is written and are forced 0 where masked", "TMC428 §8.13"),
-    reg("clk_config", Motor, 12, ChipSet::ALL, &[PULSE_DIV, RAMP_DIV, USRS], 0, "", "TMC428 §8.14, §8.15"),
-    reg("dx_ref_tolerance", Motor, 13, ChipSet::ALL, &[DX_REF_TOLERANCE], 0, "", "TMC428 §8.15"),
-    reg("x_latched", Motor, 14, ChipSet::ALL, &[X_LATCHED], 0, "a write (any data) arms the latch: lp := 1", "TMC428 §8.16"),
-    reg("ustep_count", Motor, 15, ChipSet::TMC429_4210, &[USTEP_COUNT], 0, "", "TMC429 §8.1.16"),
-    reg("datagram_low_word", Global, 0, ChipSet::SPI_CHAIN, &[DATAGRAM_LOW], 0, "a write arms CDGW until the next datagram completes", "TMC428 §9.1"),
-    reg("datagram_high_word", Global, 1, ChipSet::SPI_CHAIN, &[DATAGRAM_HIGH], 0, "a write arms CDGW until the next datagram completes", "TMC428 §9.1"),
-    reg("cover_pos_len", Global, 2, ChipSet::SPI_CHAIN, &[COVER_WAITING, COVER_POS, COVER_LEN], 0x000100, "cover_pos reads back +1 (contract C29)", "TMC428 §9.2"),
-    reg("cover_datagram", Global, 3, ChipSet::SPI_CHAIN, &[COVER_DATAGRAM], 0, "a write sets cw and requests a datagram", "TMC428 §9.3"),
-    reg("if_configuration", Global, 4, ChipSet::TMC429_4210, &[INV_REF, SDO_INT, STEP_HALF, INV_STP, INV_DIR, EN_SD, POS_COMP_SEL, EN_REFR], 0, "", "TMC429 §8.2.4"),
-    reg("pos_comp", Global, 5, ChipSet::TMC429_4210, &[POS_COMP], 0, "", "TMC429 §8.2.4.1"),
-    reg("pos_comp_int", Global, 6, ChipSet::TMC429_4210, &[POS_COMP_M, POS_COMP_I], 0, "I clears where 1 is written and is forced 0 while M = 0", "TMC429 §8.2.4.2"),
-    reg("power_down", Global, 8, ChipSet::ALL, &[POWER_DOWN], 0, "a write stops all clocks until nSCS_C falls", "TMC428 §9.5"),
-    reg("type_version", Global, 9, ChipSet::TMC429_4210, &[TYPE_VERSION], 0x429101, "", "TMC429 §8.2.4.4"),
-    reg("ref_switches", Global, 14, ChipSet::ALL, &[R1, L1, R2, L2, R3, L3], 0, "", "TMC428 §9.6, TMC429 §8.2.4.5"),
-    reg("global_parameters", Global, 15, ChipSet::NOT_4210, &[LSMD, POL_NSCS_S, POL_SCK_S, POL_PH_AB, POL_FD_AB, POL_DAC_AB, CS_COM_IND, CLK2_DIV, CONT_UPDATE, REFMUX, MOT1R], 0x000F00, "", "TMC428 §9.7, TMC429 §8.2.5"),
-    reg("global_parameters", Global, 15, ChipSet::TMC4210, &[STPDIV, MOT1R], 0x000F00, "", "TMC4210 §5.3"),
+    reg("x_target", Motor, idx::X_TARGET, ChipSet::ALL, &[X_TARGET], 0, "", "TMC428 §8.1"),
+    reg("x_actual", Motor, idx::X_ACTUAL, ChipSet::ALL, &[X_ACTUAL], 0, "in RAMP and SOFT mode the motor then drives to x_target", "TMC428 §8.2"),
+    reg("v_min", Motor, idx::V_MIN, ChipSet::ALL, &[V_MIN], 0, "", "TMC428 §8.3"),
+    reg("v_max", Motor, idx::V_MAX, ChipSet::ALL, &[V_MAX], 0, "", "TMC428 §8.4"),
+    reg("v_target", Motor, idx::V_TARGET, ChipSet::ALL, &[V_TARGET], 0, "overwritten by the ramp generator at each ramp tick in RAMP and SOFT mode (contract C24)", "TMC428 §8.5"),
+    reg("v_actual", Motor, idx::V_ACTUAL, ChipSet::ALL, &[V_ACTUAL], 0, "a write sets the internal velocity and clears its 8 fraction bits (contract C23)", "TMC428 §8.6"),
+    reg("a_max", Motor, idx::A_MAX, ChipSet::ALL, &[A_MAX], 0, "", "TMC428 §8.7"),
+    reg("a_actual", Motor, idx::A_ACTUAL, ChipSet::ALL, &[A_ACTUAL], 0, "", "TMC428 §8.8"),
+    reg("current_scaling", Motor, idx::CURRENT_SCALING, ChipSet::NOT_4210, &[IS_AGTAT, IS_ALEAT, IS_V0, A_THRESHOLD], 0, "", "TMC428 §8.9"),
+    reg("pmul_pdiv", Motor, idx::PMUL_PDIV, ChipSet::ALL, &[PMUL, PDIV], 0x8000, "bit 15 reads 1 (contract C22)", "TMC428 §8.10"),
+    reg("ref_conf_rm", Motor, idx::REF_CONF_RM, ChipSet::ALL, &[LP, REF_RNL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L, RM], 0, "", "TMC428 §8.11, §8.12"),
+    reg("interrupt", Motor, idx::INTERRUPT, ChipSet::ALL, &[INTERRUPT_MASK, INTERRUPT_FLAGS], 0, "flags clear where 1 is written and are forced 0 where masked", "TMC428 §8.13"),
+    reg("clk_config", Motor, idx::CLK_CONFIG, ChipSet::ALL, &[PULSE_DIV, RAMP_DIV, USRS], 0, "", "TMC428 §8.14, §8.15"),
+    reg("dx_ref_tolerance", Motor, idx::DX_REF_TOLERANCE, ChipSet::ALL, &[DX_REF_TOLERANCE], 0, "", "TMC428 §8.15"),
+    reg("x_latched", Motor, idx::X_LATCHED, ChipSet::ALL, &[X_LATCHED], 0, "a write (any data) arms the latch: lp := 1", "TMC428 §8.16"),
+    reg("ustep_count", Motor, idx::USTEP_COUNT, ChipSet::TMC429_4210, &[USTEP_COUNT], 0, "", "TMC429 §8.1.16"),
+    reg("datagram_low_word", Global, jdx::DATAGRAM_LOW_WORD, ChipSet::SPI_CHAIN, &[DATAGRAM_LOW], 0, "a write arms CDGW until the next datagram completes", "TMC428 §9.1"),
+    reg("datagram_high_word", Global, jdx::DATAGRAM_HIGH_WORD, ChipSet::SPI_CHAIN, &[DATAGRAM_HIGH], 0, "a write arms CDGW until the next datagram completes", "TMC428 §9.1"),
+    reg("cover_pos_len", Global, jdx::COVER_POS_LEN, ChipSet::SPI_CHAIN, &[COVER_WAITING, COVER_POS, COVER_LEN], 0x000100, "cover_pos reads back +1 (contract C29)", "TMC428 §9.2"),
+    reg("cover_datagram", Global, jdx::COVER_DATAGRAM, ChipSet::SPI_CHAIN, &[COVER_DATAGRAM], 0, "a write sets cw and requests a datagram", "TMC428 §9.3"),
+    reg("if_configuration", Global, jdx::IF_CONFIGURATION, ChipSet::TMC429_4210, &[INV_REF, SDO_INT, STEP_HALF, INV_STP, INV_DIR, EN_SD, POS_COMP_SEL, EN_REFR], 0, "", "TMC429 §8.2.4"),
+    reg("pos_comp", Global, jdx::POS_COMP, ChipSet::TMC429_4210, &[POS_COMP], 0, "", "TMC429 §8.2.4.1"),
+    reg("pos_comp_int", Global, jdx::POS_COMP_INT, ChipSet::TMC429_4210, &[POS_COMP_M, POS_COMP_I], 0, "I clears where 1 is written and is forced 0 while M = 0", "TMC429 §8.2.4.2"),
+    reg("power_down", Global, jdx::POWER_DOWN, ChipSet::ALL, &[POWER_DOWN], 0, "a write stops all clocks until nSCS_C falls", "TMC428 §9.5"),
+    reg("type_version", Global, jdx::TYPE_VERSION, ChipSet::TMC429_4210, &[TYPE_VERSION], 0x429101, "", "TMC429 §8.2.4.4"),
+    reg("ref_switches", Global, jdx::REF_SWITCHES, ChipSet::ALL, &[R1, L1, R2, L2, R3, L3], 0, "", "TMC428 §9.6, TMC429 §8.2.4.5"),
+    reg("global_parameters", Global, jdx::GLOBAL_PARAMETERS, ChipSet::NOT_4210, &[LSMD, POL_NSCS_S, POL_SCK_S, POL_PH_AB, POL_FD_AB, POL_DAC_AB, CS_COM_IND, CLK2_DIV, CONT_UPDATE, REFMUX, MOT1R], 0x000F00, "", "TMC428 §9.7, TMC429 §8.2.5"),
+    reg("global_parameters", Global, jdx::GLOBAL_PARAMETERS, ChipSet::TMC4210, &[STPDIV, MOT1R], 0x000F00, "", "TMC4210 §5.3"),
     reg("ram_driver_config", Ram, 0, ChipSet::NOT_4210, &[RAM_ODD, RAM_EVEN], 0, "two 6-bit cells per word: bit 5 NxM, bits 4..0 primary signal code", "TMC428 §10, §11"),
     reg("ram_microstep_table", Ram, 1, ChipSet::NOT_4210, &[RAM_ODD, RAM_EVEN], 0, "two 6-bit quarter-sine entries per word", "TMC428 §10, §12"),
 ];

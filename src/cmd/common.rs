@@ -14,6 +14,8 @@ pub struct ChipArgs {
 }
 
 impl ChipArgs {
+    /// The CLK frequency: `--fclk`, or the variant's default.
+    #[allow(dead_code)] // used by the subcommands that report time
     pub fn fclk(&self) -> u64 {
         self.fclk.unwrap_or_else(|| self.chip.default_fclk())
     }
@@ -34,7 +36,7 @@ fn parse_fclk(s: &str) -> Result<u64, String> {
     };
     let v: f64 = num.trim().parse().map_err(|_| format!("expected a frequency in Hz (e.g. 16000000 or 16MHz), found '{s}'"))?;
     let hz = v * mult;
-    if !(hz >= 1.0 && hz <= 1e9) {
+    if !(1.0..=1e9).contains(&hz) {
         return Err(format!("frequency {s} out of range (1 Hz .. 1 GHz)"));
     }
     Ok(hz.round() as u64)

@@ -3,3 +3,4 @@ pub mod common;
 pub mod cosim;
 pub mod regmap;
 pub mod spi;
+pub mod tmcl;

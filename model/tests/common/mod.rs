@@ -5,22 +5,11 @@ use tmc429_model::host::Host;
 use tmc429_model::regmap::{global_a7, motor_a7};
 use tmc429_model::Chip;
 
-pub const X_TARGET: u8 = 0;
-pub const X_ACTUAL: u8 = 1;
-pub const V_MIN: u8 = 2;
-pub const V_MAX: u8 = 3;
-pub const V_TARGET: u8 = 4;
-pub const V_ACTUAL: u8 = 5;
-pub const A_MAX: u8 = 6;
-pub const A_ACTUAL: u8 = 7;
-pub const CURRENT: u8 = 8;
-pub const PMUL_PDIV: u8 = 9;
-pub const REF_CONF_RM: u8 = 10;
-pub const INTERRUPT: u8 = 11;
-pub const CLK_CONFIG: u8 = 12;
-pub const DX_REF_TOL: u8 = 13;
-pub const X_LATCHED: u8 = 14;
-pub const USTEP_COUNT: u8 = 15;
+pub use tmc429_model::regmap::idx::*;
+/// Short name of idx::CURRENT_SCALING.
+pub const CURRENT: u8 = CURRENT_SCALING;
+/// Short name of idx::DX_REF_TOLERANCE.
+pub const DX_REF_TOL: u8 = DX_REF_TOLERANCE;
 
 pub fn host(chip: Chip) -> Host {
     Host::new(chip)

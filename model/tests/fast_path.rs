@@ -1,0 +1,64 @@
+//! The fast paths of `Tmc429::tick` change nothing: a chip with them and one without, fed the
+//! same pins, agree on every output and probe in every cycle.
+
+mod common;
+use common::*;
+
+use std::sync::{Arc, Mutex};
+
+use proptest::prelude::*;
+use tmc429_model::pmulpdiv;
+use tmc429_model::{Chip, Inputs, Outputs, Probes, Tmc429};
+
+#[derive(Clone, Debug)]
+enum Op {
+    Write(u8, u8, u32),
+    Wait(u64),
+    Refs(bool, bool, bool),
+}
+
+fn ops() -> impl Strategy<Value = Vec<Op>> {
+    let op = prop_oneof![
+        (0u8..3, 0u8..16, any::<u32>()).prop_map(|(m, i, d)| Op::Write(m, i, d & 0xFF_FFFF)),
+        (0u8..3, prop::sample::select(vec![0u8, 1, 3, 4, 6, 10, 12]), 0u32..4096).prop_map(|(m, i, d)| Op::Write(m, i, d)),
+        (1u64..20_000).prop_map(Op::Wait),
+        (any::<bool>(), any::<bool>(), any::<bool>()).prop_map(|(a, b, c)| Op::Refs(a, b, c)),
+    ];
+    prop::collection::vec(op, 1..40)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    #[test]
+    fn fast_path_is_exact(chip in prop::sample::select(Chip::ALL.to_vec()), ops in ops()) {
+        let trace: Arc<Mutex<Vec<(Inputs, Outputs, Probes)>>> = Arc::default();
+        let mut h = host(chip);
+        let t = trace.clone();
+        h.set_observer(Box::new(move |c: &Tmc429, i: &Inputs, o: &Outputs| t.lock().unwrap().push((*i, *o, c.probes()))));
+        // Moving axes to begin with.
+        let p = pmulpdiv::calc(500, 2, 1, 0.01).register_value().unwrap();
+        for m in 0..3 {
+            motion_setup(&mut h, m, 1, 2, 1, 1500, 500, p, 0);
+            wr(&mut h, m, X_TARGET, 3000 * (m as u32 + 1));
+        }
+        for op in &ops {
+            match *op {
+                Op::Write(m, i, d) => wr(&mut h, m, i, d),
+                Op::Wait(n) => h.wait(n),
+                Op::Refs(a, b, c) => {
+                    let p = h.pins_mut();
+                    p.ref1 = a;
+                    p.ref2 = b;
+                    p.ref3 = c;
+                }
+            }
+        }
+        let mut slow = Tmc429::new(chip);
+        slow.set_fast_path(false);
+        for (n, (i, o, pr)) in trace.lock().unwrap().iter().enumerate() {
+            let so = slow.tick(i);
+            prop_assert_eq!(so, *o, "outputs differ at cycle {}", n);
+            prop_assert_eq!(slow.probes(), *pr, "probes differ at cycle {}", n);
+        }
+    }
+}

@@ -1,0 +1,57 @@
+//! The target-velocity laws of RAMP_MODE and SOFT_MODE (contract C50) read back through v_target
+//! after a ramp tick, and SOFT_MODE's approach.
+
+mod common;
+use common::*;
+
+use tmc429_model::Chip;
+
+/// p = p_mul/2^(3+pdiv) = 1 with pmul byte $80 (p_mul 128) and pdiv 4.
+const P_ONE: u32 = 0x8004;
+
+fn first_tick(rm: u32, dx: u32, v_min: u32, v_max: u32) -> u32 {
+    let mut h = host(Chip::Tmc428);
+    motion_setup(&mut h, 0, 0, 0, v_min, v_max, 1, P_ONE, rm);
+    wr(&mut h, 0, X_TARGET, dx);
+    // One frame later a snapshot and a ramp tick have happened (C41).
+    h.wait(64);
+    rd(&mut h, 0, V_TARGET)
+}
+
+#[test]
+fn ramp_mode_square_root_law() {
+    // isqrt(p_mul·(|dx|−1)·2^8 >> pdiv) = isqrt(128·299·256/16) = isqrt(612352) = 782.
+    assert_eq!(first_tick(0, 300, 1, 2047), 782);
+    // dx = 1 aims at standstill: v_min carries the motor over the last step.
+    assert_eq!(first_tick(0, 1, 3, 2047), 3);
+    // Clamped to v_max; negative dx gives a negative target.
+    assert_eq!(first_tick(0, 100_000, 1, 500), 500);
+    assert_eq!(first_tick(0, (-300i32) as u32 & 0xFF_FFFF, 1, 2047), (-782i32) as u32 & 0xFFF);
+    // v_min > v_max: the clamp yields v_max (C50).
+    assert_eq!(first_tick(0, 1, 40, 20), 20);
+}
+
+#[test]
+fn soft_mode_linear_law() {
+    // (p_mul·|dx|) >> (3+pdiv) = 128·300/128 = 300.
+    assert_eq!(first_tick(1, 300, 1, 2047), 300);
+    assert_eq!(first_tick(1, 5000, 1, 2047), 2047);
+    assert_eq!(first_tick(1, 2, 5, 2047), 5, "v_min below");
+}
+
+#[test]
+fn soft_mode_ends_on_target() {
+    let mut h = host(Chip::Tmc428);
+    // p by the datasheet method for a_max 100 (p = 100/128 reduced 5 %).
+    let p = tmc429_model::pmulpdiv::calc(100, 0, 0, 0.05).register_value().unwrap();
+    motion_setup(&mut h, 0, 0, 0, 2, 2047, 100, p, 1);
+    wr(&mut h, 0, X_TARGET, 20_000);
+    let mut max_x = 0;
+    for _ in 0..200 {
+        h.wait(20_000);
+        max_x = max_x.max(s24(h.chip().motor(0).x_actual));
+    }
+    assert_eq!(s24(h.chip().motor(0).x_actual), 20_000);
+    assert_eq!(max_x, 20_000, "never passed");
+    assert_eq!(h.chip().motor(0).v, 0);
+}

@@ -1,0 +1,227 @@
+//! Reference switches, stops, latch, interrupts and position compare (TMC428 §8.12–§8.16, §9.6,
+//! Table 9-3; TMC429 §8.2.4; contract C60–C65).
+
+mod common;
+use common::*;
+
+use tmc429_model::host::Host;
+use tmc429_model::regmap::global_a7;
+use tmc429_model::Chip;
+
+const REF_SWITCHES: u8 = 14;
+
+fn set_refs(h: &mut Host, r1: bool, r2: bool, r3: bool) {
+    let p = h.pins_mut();
+    p.ref1 = r1;
+    p.ref2 = r2;
+    p.ref3 = r3;
+}
+
+/// Table 9-3 rows (refmux = 0): $7C bits r1 l1 r2 l2 r3 l3 (bits 0..5) and the RS status bits.
+#[test]
+fn switch_mapping() {
+    let mut h = host(Chip::Tmc428);
+    set_refs(&mut h, true, false, true);
+    h.wait(4);
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0b10_0010, "L1 = REF1, L3 = REF3");
+    assert_eq!(h.status(), 0x15 | 0x02 | 0x20, "RS1, RS3");
+    h.write(global_a7(15), 0x20_0F00); // mot1r
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0b00_0011, "R1 = REF3, motor 3 none");
+    set_refs(&mut h, false, true, false);
+    h.wait(4);
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0b00_1000, "L2 = REF2");
+    // TMC429: en_refr maps REFR1..3 to the right switches; inv_ref inverts all.
+    let mut h = host(Chip::Tmc429);
+    {
+        let p = h.pins_mut();
+        p.refr1 = true;
+        p.refr2 = false;
+        p.refr3 = true;
+    }
+    h.wait(4);
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0, "REFR ignored while en_refr = 0");
+    h.write(global_a7(4), 0x100);
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0b01_0001);
+    h.write(global_a7(4), 0x101);
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0b10_1110, "inverted: REF1..3 open = active, REFR2 low = active");
+    // TMC4210: REF_L = REF1 (l1), GP_IN = REF2 (bit 3), REF_R = REF3 with mot1r (r1).
+    let mut h = host(Chip::Tmc4210);
+    set_refs(&mut h, true, true, true);
+    h.wait(4);
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0b00_1010);
+    h.write(global_a7(15), 0x20_0000);
+    assert_eq!(h.read(global_a7(REF_SWITCHES)), 0b00_1011);
+}
+
+fn velocity_mode(h: &mut Host, m: u8, v: i32, a_max: u32) {
+    motion_setup(h, m, 0, 0, 0, 2047, a_max, 0, 2);
+    wr(h, m, V_TARGET, v as u32 & 0xFFF);
+}
+
+/// C61 hard stop: V := 0 while the left switch is active and the motor moves left; motion to the
+/// right is allowed; the STOP and STOP_LEFT_HIGH events fire.
+#[test]
+fn hard_stop_left() {
+    let mut h = host(Chip::Tmc428);
+    wr(&mut h, 0, INTERRUPT, 0xFF00);
+    velocity_mode(&mut h, 0, -1000, 2047);
+    h.wait(5000);
+    assert_eq!(h.chip().motor(0).v_actual(), -1000);
+    wr(&mut h, 0, INTERRUPT, 0xFFFF); // clear what happened so far
+    set_refs(&mut h, true, false, false);
+    h.wait(3);
+    assert_eq!(h.chip().motor(0).v, 0, "stopped 3 CLK after the pin (2 sync flops + 1)");
+    let x = h.chip().motor(0).x_actual;
+    h.wait(10_000);
+    assert_eq!(h.chip().motor(0).x_actual, x, "held");
+    // The left switch is also the reference switch, active outside a window of 0: REF_WRONG.
+    assert_eq!(rd(&mut h, 0, INTERRUPT) & 0xFF, (INT_STOP | INT_STOP_LEFT_HIGH | INT_REF_WRONG) as u32);
+    // Away from the switch.
+    wr(&mut h, 0, V_TARGET, 500);
+    h.wait(5000);
+    assert_eq!(h.chip().motor(0).v_actual(), 500);
+    // DISABLE_STOP_L: the switch does not stop.
+    wr(&mut h, 0, REF_CONF_RM, 0x0102);
+    wr(&mut h, 0, V_TARGET, (-300i32) as u32 & 0xFFF);
+    h.wait(5000);
+    assert_eq!(h.chip().motor(0).v_actual(), -300);
+}
+
+const INT_REF_WRONG: u8 = 2;
+const INT_STOP: u8 = 8;
+const INT_STOP_LEFT_HIGH: u8 = 64;
+
+/// C61 soft stop: the ramp target is 0 while the switch holds, so V falls by a_max per ramp tick.
+#[test]
+fn soft_stop_right() {
+    let mut h = host(Chip::Tmc428);
+    h.write(global_a7(15), 0x20_0F00); // mot1r: REF3 = right switch of motor 1
+    velocity_mode(&mut h, 0, 1000, 2047);
+    wr(&mut h, 0, REF_CONF_RM, 0x0402); // SOFT_STOP, VELOCITY_MODE
+    h.wait(5000);
+    wr(&mut h, 0, A_MAX, 256);
+    set_refs(&mut h, false, false, true);
+    let c = h.chip_mut();
+    let mut prev = c.motor(0).v;
+    let mut ticks = 0;
+    let idle = h.pins();
+    let c = h.chip_mut();
+    while c.motor(0).v != 0 {
+        c.tick(&idle);
+        let v = c.motor(0).v;
+        if v != prev {
+            assert_eq!(prev - v, 256);
+            ticks += 1;
+        }
+        prev = v;
+    }
+    assert_eq!(ticks, 1000, "1000·256 / a_max 256 ramp ticks");
+}
+
+/// C61: dx_ref_tolerance masks the reference switch (REF_RnL-selected) near position 0.
+#[test]
+fn reference_tolerance() {
+    let mut h = host(Chip::Tmc428);
+    wr(&mut h, 0, DX_REF_TOL, 100);
+    wr(&mut h, 0, X_ACTUAL, 50);
+    velocity_mode(&mut h, 0, -200, 2047);
+    set_refs(&mut h, true, false, false);
+    h.wait(20_000);
+    let x = s24(h.chip().motor(0).x_actual);
+    assert!(x < 50, "moved through the switch inside the window: {x}");
+    // It stops once |x_actual| ≥ 100 (the window is |x| < dx_ref_tolerance).
+    h.wait(2_000_000);
+    assert_eq!(s24(h.chip().motor(0).x_actual), -100);
+    assert_eq!(h.chip().motor(0).v, 0);
+}
+
+/// C62: the latch takes x_actual on either edge of the reference switch while lp = 1 and the
+/// motor moves, then clears lp.
+#[test]
+fn latch_on_both_edges() {
+    for rising in [true, false] {
+        let mut h = host(Chip::Tmc428);
+        wr(&mut h, 0, REF_CONF_RM, 0x0102); // left switch does not stop; VELOCITY
+        set_refs(&mut h, !rising, false, false);
+        velocity_mode(&mut h, 0, 1500, 2047);
+        wr(&mut h, 0, REF_CONF_RM, 0x0102);
+        h.wait(3000);
+        wr(&mut h, 0, X_LATCHED, 0);
+        assert_eq!(rd(&mut h, 0, REF_CONF_RM) >> 16, 1);
+        h.wait(5000);
+        let x_at_edge = h.chip().motor(0).x_actual;
+        set_refs(&mut h, rising, false, false);
+        // The edge reaches the latch after the 2 synchronizer flops.
+        h.wait(3);
+        assert_eq!(rd(&mut h, 0, REF_CONF_RM) >> 16, 0, "lp cleared");
+        let latched = rd(&mut h, 0, X_LATCHED);
+        assert!(latched >= x_at_edge && latched <= x_at_edge + 1, "latched {latched}, at edge {x_at_edge}");
+        assert_ne!(latched, 0);
+    }
+}
+
+/// C63: REF_WRONG (switch active outside the window) and REF_MISS (position 0 with the switch
+/// inactive); STOP_LEFT_LOW on release.
+#[test]
+fn reference_interrupts() {
+    let mut h = host(Chip::Tmc428);
+    wr(&mut h, 0, INTERRUPT, 0xFF00);
+    wr(&mut h, 0, INTERRUPT, 0xFFFF);
+    wr(&mut h, 0, DX_REF_TOL, 10);
+    wr(&mut h, 0, X_ACTUAL, 20);
+    set_refs(&mut h, true, false, false);
+    h.wait(4);
+    assert_eq!(rd(&mut h, 0, INTERRUPT) & 0xFF, 0x02 | 0x40, "REF_WRONG, STOP_LEFT_HIGH");
+    wr(&mut h, 0, INTERRUPT, 0xFFFF);
+    set_refs(&mut h, false, false, false);
+    h.wait(4);
+    assert_eq!(rd(&mut h, 0, INTERRUPT) & 0xFF, 0x10, "STOP_LEFT_LOW");
+    wr(&mut h, 0, X_ACTUAL, 0);
+    assert_eq!(rd(&mut h, 0, INTERRUPT) & 0xFF, 0x10 | 0x04 | 0x01, "REF_MISS, and POS_END (x_target is 0)");
+}
+
+/// C65: position compare on TMC429 — POSCMP pin level and the I flag with mask M.
+#[test]
+fn position_compare() {
+    let mut h = host(Chip::Tmc429);
+    h.wait(2);
+    assert!(h.outputs().poscmp, "x_actual 0 = pos_comp 0 at reset");
+    h.write(global_a7(5), 40);
+    h.write(global_a7(6), 0x100); // M
+    h.write(global_a7(4), 0x40); // pos_comp_sel = motor 2
+    assert!(!h.outputs().poscmp);
+    velocity_mode(&mut h, 1, 2047, 2047);
+    let c = h.chip_mut();
+    let idle = tmc429_model::Inputs::default();
+    let mut n = 0;
+    while c.motor(1).x_actual != 40 {
+        c.tick(&idle);
+        n += 1;
+        assert!(n < 100_000);
+    }
+    c.tick(&idle);
+    assert!(c.outputs().poscmp, "POSCMP one edge after the match");
+    assert_eq!(h.read(global_a7(6)), 0x101, "I set");
+    assert_eq!(h.status() & 0x80, 0x80, "INT");
+    h.write(global_a7(6), 0x101);
+    assert_eq!(h.read(global_a7(6)), 0x100, "I cleared by writing 1");
+    // TMC428 has no position compare: the pin stays low.
+    let mut h = host(Chip::Tmc428);
+    h.wait(5);
+    assert!(!h.outputs().poscmp);
+}
+
+/// C63: STOP_RIGHT_HIGH and STOP_RIGHT_LOW on the right switch (mot1r: REF3 = R1).
+#[test]
+fn right_switch_interrupts() {
+    let mut h = host(Chip::Tmc428);
+    h.write(global_a7(15), 0x20_0F00);
+    wr(&mut h, 0, INTERRUPT, 0xF000);
+    set_refs(&mut h, false, false, true);
+    h.wait(4);
+    assert_eq!(rd(&mut h, 0, INTERRUPT), 0xF080, "STOP_RIGHT_HIGH");
+    wr(&mut h, 0, INTERRUPT, 0xF0FF);
+    set_refs(&mut h, false, false, false);
+    h.wait(4);
+    assert_eq!(rd(&mut h, 0, INTERRUPT), 0xF020, "STOP_RIGHT_LOW");
+}

@@ -1,0 +1,94 @@
+//! `tmc429 spi` and `tmc429 regmap` as a user runs them.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn tmc429(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tmc429"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+/// The README's main command: the bundled example script (TMC428 §6.5 / TMC429 §6.2.3 examples).
+#[test]
+fn bundled_example() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/spi/datasheet.spi");
+    let o = tmc429(&["spi", path], "");
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert_eq!(text(&o.stdout), "15000000\n15000123\n15000000\n15002321\n15429101\n15\n");
+}
+
+#[test]
+fn stdin_timestamps_and_decode() {
+    let o = tmc429(&["spi", "--timestamps", "--decode", "--chip", "tmc428"], "0x1A000123\n$1B000000 # read back\nwait 10\nbits 4 0x0\n");
+    assert_eq!(o.status.code(), Some(0));
+    let out = text(&o.stdout);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 3);
+    // 4 CLK hold + 32 bits × 8 CLK: nSCS_C rises at edge 260; each frame takes 264 edges with
+    // its final hold; then 10 waited and 4 + 4 × 8 for the 4-bit frame.
+    assert!(lines[0].starts_with("260 15000000  # W dx_ref_tolerance[0] dx_ref_tolerance=291 ($123) | status $15"), "{}", lines[0]);
+    assert!(lines[1].starts_with("524 15000123  # R dx_ref_tolerance[0]"), "{}", lines[1]);
+    assert!(lines[2].starts_with("574 1  # short frame"), "{}", lines[2]);
+}
+
+#[test]
+fn script_errors_name_every_line_and_exit_2() {
+    let o = tmc429(&["spi"], "0x1A000123\n0x1A00012\nbits 40 1\nwait x\npin REF9=1\npin REF1=2\nfoo\n");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(o.stdout.is_empty(), "nothing runs before the whole script parses");
+    let err = text(&o.stderr);
+    for (line, what) in [
+        (2, "a datagram has exactly 8 hex digits, found '0x1A00012'"),
+        (3, "expected a bit count 1..31, found '40'"),
+        (4, "expected a decimal cycle count, found 'x'"),
+        (5, "unknown pin 'REF9'"),
+        (6, "pin REF1: expected 0 or 1, found '2'"),
+        (7, "expected a datagram (8 hex digits), 'bits', 'wait' or 'pin', found 'foo'"),
+    ] {
+        assert!(err.contains(&format!("tmc429: error: <stdin>:{line}: {what}")), "line {line} missing in:\n{err}");
+    }
+}
+
+#[test]
+fn bad_options_exit_2() {
+    let o = tmc429(&["spi", "--sck-half", "2"], "0x1A000123\n");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("below the minimum of 3 CLK"));
+    let o = tmc429(&["spi", "--chip", "tmc999"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("expected tmc428, tmc429 or tmc4210"));
+    let o = tmc429(&["spi", "/nonexistent/script.spi"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("/nonexistent/script.spi: cannot read"));
+}
+
+/// docs/regmap.md is the generated Markdown, byte for byte.
+#[test]
+fn regmap_doc_is_generated() {
+    let o = tmc429(&["regmap", "--format", "md"], "");
+    assert_eq!(o.status.code(), Some(0));
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regmap.md")).unwrap();
+    assert!(text(&o.stdout) == doc, "docs/regmap.md is stale: run `tmc429 regmap --format md > docs/regmap.md`");
+}
+
+#[test]
+fn regmap_c_and_json() {
+    let c = text(&tmc429(&["regmap", "--format", "c"], "").stdout);
+    assert!(c.contains("#define TMC429_A7_TYPE_VERSION 0x39u"));
+    assert!(c.contains("#define TMC429_PMUL_PDIV_PMUL_SHIFT 8u"));
+    assert!(c.contains("#define TMC429_CURRENT_SCALING_IS_AGTAT_MASK 0x700000ul"));
+    let j = text(&tmc429(&["regmap", "--format", "json"], "").stdout);
+    assert!(j.contains("{\"name\":\"v_max\",\"lsb\":0,\"width\":11,\"signed\":false,\"access\":\"RW\""));
+    assert!(j.trim_start().starts_with('[') && j.trim_end().ends_with(']'));
+}

@@ -1,0 +1,305 @@
+//! The manual's example programs (§5.6.5, §5.7.20, §11.2, §11.3, §11.4, §11.6): they assemble,
+//! survive a disassembly round trip, and run on the module.
+
+use std::path::Path;
+use tmcl::asm;
+use tmcl::chip::ModelChip;
+use tmcl::module::AppState;
+use tmcl::proto::{op, Instruction};
+use tmcl::{Module, Origin, Response};
+
+fn module() -> Module<ModelChip> {
+    Module::new(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000))
+}
+
+fn assemble(src: &str) -> Vec<Instruction> {
+    let p = asm::assemble(Path::new("example.tmc"), src, &asm::FileSystem).unwrap_or_else(|e| panic!("{e}"));
+    // Round trip: disassembly assembles to the same binary.
+    let text = asm::disassemble(&p.code);
+    let q = asm::assemble(Path::new("round.tmc"), &text, &asm::FileSystem).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    assert_eq!(p.code, q.code, "round trip of\n{text}");
+    p.code
+}
+
+fn gap(m: &mut Module<ModelChip>, p: u8, mo: u8) -> i32 {
+    let (s, v) = m.execute(&Instruction::new(op::GAP, p, mo, 0), Origin::Direct);
+    assert_eq!(s, 100);
+    v
+}
+
+fn start(m: &mut Module<ModelChip>, code: &[Instruction]) {
+    m.load_program(code).unwrap();
+    m.vm.state = AppState::Run;
+}
+
+const TIMER_IRQ: &str = r#"
+VECT 0, Timer0Irq //define the interrupt vector
+SGP 0, 3, 1000 //configure the interrupt: set its period to 1000ms
+EI 0 //enable this interrupt
+EI 255 //globally switch on interrupt processing
+
+//Main program: toggles output 3, using a WAIT command for the delay
+Loop:
+  SIO 3, 2, 1
+  WAIT TICKS, 0, 50
+  SIO 3, 2, 0
+  WAIT TICKS, 0, 50
+  JA Loop
+
+//Here is the interrupt handling routine
+Timer0Irq:
+  GIO 0, 2 //check if OUT0 is high
+  JC NZ, Out0Off //jump if not
+  SIO 0, 2, 1 //switch OUT0 high
+  RETI //end of interrupt
+Out0Off:
+  SIO 0, 2, 0 //switch OUT0 low
+  RETI //end of interrupt
+"#;
+
+#[test]
+fn timer_interrupt_example_5_6_5() {
+    let code = assemble(TIMER_IRQ);
+    assert_eq!(code.len(), 15);
+    assert_eq!(code[0], Instruction::new(op::VECT, 0, 0, 9));
+    assert_eq!(code[8], Instruction::new(op::JA, 0, 0, 4));
+    // The variant with Interrupts.inc assembles to the same first four instructions.
+    let inc = "#include Interrupts.inc\n  VECT TI_TIMER0, Timer0Irq\n  SGP TI_TIMER0, 3, 1000\n  EI TI_TIMER0\n  EI TI_GLOBAL\nTimer0Irq: RETI\n";
+    let c2 = assemble(inc);
+    assert_eq!(&c2[1..4], &code[1..4]);
+    assert_eq!(c2[0], Instruction::new(op::VECT, 0, 0, 4));
+
+    let mut m = module();
+    start(&mut m, &code);
+    let out = |m: &Module<ModelChip>, n: u8| (m.io.outputs >> n) & 1;
+    m.run_ms(250);
+    assert_eq!((out(&m, 3), out(&m, 0)), (1, 0));
+    m.run_ms(500); // 750 ms
+    assert_eq!((out(&m, 3), out(&m, 0)), (0, 0));
+    m.run_ms(400); // 1150 ms: timer interrupt once
+    assert_eq!(out(&m, 0), 1);
+    m.run_ms(1000); // 2150 ms: twice
+    assert_eq!(out(&m, 0), 0);
+    m.run_ms(1000); // 3150 ms
+    assert_eq!(out(&m, 0), 1);
+    assert_eq!(m.vm.state, AppState::Run);
+}
+
+const MAIN_LOOP_11_2: &str = r#"
+//Initialization
+    SAP 4, 0, 500 //define max. positioning speed
+    SAP 5, 0, 100 //define max. acceleration
+MainLoop:
+    //do something, in this example just running between two positions
+    MVP ABS, 0, 5000
+    WAIT POS, 0, 0
+    MVP ABS, 0, 0
+    WAIT POS, 0, 0
+    JA MainLoop //end of the main loop => run infinitely
+"#;
+
+const CONSTANTS_11_3: &str = r#"
+//Define some constants
+#include TMCLParam.tmc
+MaxSpeed = 500
+MaxAcc = 100
+Position0 = 0
+Position1 = 5000
+//Initialization
+    SAP APMaxPositioningSpeed, Motor0, MaxSpeed
+    SAP APMaxAcceleration, Motor0, MaxAcc
+MainLoop:
+    MVP ABS, Motor0, Position1
+    WAIT POS, Motor0, 0
+    MVP ABS, Motor0, Position0
+    WAIT POS, Motor0, 0
+    JA MainLoop
+"#;
+
+fn run_between_positions(code: &[Instruction]) {
+    let mut m = module();
+    start(&mut m, code);
+    let (mut max, mut back) = (0, false);
+    for _ in 0..400 {
+        m.run_ms(10);
+        let x = gap(&mut m, 1, 0);
+        assert!((0..=5000).contains(&x), "position {x} outside 0..5000");
+        max = max.max(x);
+        if max == 5000 && x == 0 {
+            back = true;
+        }
+    }
+    assert_eq!(max, 5000);
+    assert!(back, "returned to 0");
+    assert_eq!(gap(&mut m, 4, 0), 500);
+    assert_eq!(gap(&mut m, 5, 0), 100);
+    assert_eq!(m.vm.state, AppState::Run);
+}
+
+#[test]
+fn main_loop_example_11_2() {
+    let code = assemble(MAIN_LOOP_11_2);
+    assert_eq!(code.len(), 7);
+    run_between_positions(&code);
+}
+
+#[test]
+fn symbolic_constants_example_11_3() {
+    let code = assemble(CONSTANTS_11_3);
+    // Same program as §11.2, written with constants.
+    assert_eq!(code, assemble(MAIN_LOOP_11_2));
+    run_between_positions(&code);
+}
+
+#[test]
+fn variables_example_11_4() {
+    // The listing with its "..." elisions left out (the manual's AAP stores to an axis
+    // parameter, as printed).
+    let src = r#"
+MyVariable = 42
+    //Use a symbolic name for the user variable
+    //(This makes the program better readable and understandable.)
+SGP MyVariable, 2, 1234    //Initialize the variable with the value 1234
+GGP MyVariable, 2        //Copy the contents of the variable to the accumulator register
+CALC MUL, 2              //Multiply accumulator register with two
+AAP MyVariable, 2        //Store contents of the accumulator register to the variable
+"#;
+    let code = assemble(src);
+    assert_eq!(code[0], Instruction::new(op::SGP, 42, 2, 1234));
+    let mut m = module();
+    start(&mut m, &code);
+    m.run_ms(5);
+    assert_eq!(m.vm.state, AppState::Stop);
+    assert_eq!(m.vm.accu, 2468);
+    assert_eq!(m.user_var(42), 1234);
+    // With AGP (accumulator to global parameter) the variable takes the result.
+    let mut c2 = code.clone();
+    c2[3] = Instruction::new(op::AGP, 42, 2, 0);
+    start(&mut m, &c2);
+    m.run_ms(5);
+    assert_eq!(m.user_var(42), 2468);
+}
+
+const MIXING_11_6: &str = r#"
+//Jump commands to the TMCL routines
+Func1:      JA Func1Start
+Func2:      JA Func2Start
+Func3:      JA Func3Start
+Func1Start: MVP ABS, 0, 1000
+             WAIT POS, 0, 0
+             MVP ABS, 0, 0
+             WAIT POS, 0, 0
+             STOP
+Func2Start: ROL 0, 500
+             WAIT TICKS, 0, 100
+             MST 0
+             STOP
+Func3Start: ROR 0, 1000
+             WAIT TICKS, 0, 700
+             MST 0
+             STOP
+"#;
+
+fn direct(m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32) -> (u8, i32) {
+    match m.handle_instruction(&Instruction::new(o, t, mo, v)) {
+        Response::Normal(r) => (r.status, r.value),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn mixing_direct_and_standalone_11_6() {
+    let code = assemble(MIXING_11_6);
+    assert_eq!(&code[..3], &[Instruction::new(op::JA, 0, 0, 3), Instruction::new(op::JA, 0, 0, 8), Instruction::new(op::JA, 0, 0, 12)]);
+    let mut m = module();
+    m.load_program(&code).unwrap();
+    // Run command with address 1 calls the second function (ROL 0, 500 for one second).
+    assert_eq!(direct(&mut m, op::APP_RUN, 1, 0, 1), (100, 1));
+    m.run_ms(500);
+    assert_eq!(direct(&mut m, op::APP_STATUS, 0, 0, 0), (100, 1));
+    // Direct-mode queries while the program runs; the accumulator is untouched.
+    m.vm.accu = 77;
+    assert_eq!(direct(&mut m, op::GAP, 2, 0, 0), (100, -500));
+    assert!(direct(&mut m, op::GAP, 1, 0, 0).1 < 0);
+    assert_eq!(m.vm.accu, 77);
+    m.run_ms(1000);
+    assert_eq!(direct(&mut m, op::GGP, 128, 0, 0), (100, 0)); // stopped
+    assert_eq!(direct(&mut m, op::GAP, 2, 0, 0), (100, 0)); // MST
+    // Address 0: the first function moves to 1000 and back to 0, then stops.
+    assert_eq!(direct(&mut m, op::APP_RUN, 1, 0, 0).0, 100);
+    let mut seen = 0;
+    for _ in 0..300 {
+        m.run_ms(10);
+        seen = seen.max(direct(&mut m, op::GAP, 1, 0, 0).1);
+        if m.vm.state == AppState::Stop {
+            break;
+        }
+    }
+    // Came from a negative position after ROL: it went up to 1000 and back to 0.
+    assert_eq!(seen, 1000);
+    assert_eq!(m.vm.state, AppState::Stop);
+    assert_eq!(direct(&mut m, op::GAP, 1, 0, 0), (100, 0));
+    assert_eq!(direct(&mut m, op::GGP, 130, 0, 0).1, 7); // program counter at the STOP
+}
+
+#[test]
+fn subroutine_example_5_7_20() {
+    let src = "Loop: MVP ABS, 0, 10000\n CSUB SubW //Save program counter and jump to label SubW\n MVP ABS, 0, 0\n JA Loop\n\nSubW: WAIT POS, 0, 0\n WAIT TICKS, 0, 50\n RSUB //Continue with the command following the CSUB command\n";
+    let code = assemble(src);
+    assert_eq!(code[1], Instruction::new(op::CSUB, 0, 0, 4));
+    let mut m = module();
+    start(&mut m, &code);
+    m.run_ms(200);
+    assert_eq!(m.vm.stack, vec![2]);
+    m.run_ms(2000);
+    let x = gap(&mut m, 1, 0);
+    assert!((0..=10000).contains(&x));
+}
+
+#[test]
+fn calc_comp_jc_and_nesting() {
+    // Eight levels of subroutines; a ninth call is ignored (manual §5.7.20).
+    let mut src = String::from("CALC LOAD, 5\nCALCX LOAD\nCALC MUL, 3\nCALCX SUB\nCOMP 10\nJC EQ, Ok1\nSTOP\nOk1: CALCX SWAP\n");
+    src.push_str("CSUB S1\nSTOP\n");
+    for i in 1..=9 {
+        src.push_str(&format!("S{i}: AGP {i}, 2\n"));
+        if i < 9 {
+            src.push_str(&format!("CSUB S{}\n", i + 1));
+        }
+        src.push_str("RSUB\n");
+    }
+    let code = assemble(&src);
+    let mut m = module();
+    start(&mut m, &code);
+    m.run_ms(5);
+    assert_eq!(m.vm.state, AppState::Stop);
+    // accu = 5*3 - 5 = 10 → EQ taken → SWAP: accu 5, X 10.
+    assert_eq!((m.vm.accu, m.vm.x), (5, 10));
+    for i in 1..=8 {
+        assert_eq!(m.user_var(i), 5, "S{i} ran");
+    }
+    assert_eq!(m.user_var(9), 0, "the ninth nested call is ignored");
+}
+
+#[test]
+fn wait_timeout_sets_eto() {
+    let code = assemble("MVP ABS, 0, 100000\nWAIT POS, 0, 5\nJC ETO, T\nSTOP\nT: SGP 0, 2, 1\nCLE ETO\nJC ETO, Bad\nSTOP\nBad: SGP 1, 2, 1\n");
+    let mut m = module();
+    start(&mut m, &code);
+    m.run_ms(100);
+    assert_eq!(m.user_var(0), 1);
+    assert_eq!(m.user_var(1), 0);
+    assert!(!m.vm.eto);
+}
+
+#[test]
+fn assembler_errors_name_file_and_line() {
+    let e = asm::assemble(Path::new("bad.tmc"), "SAP 4, 0, 100\n  FOO 1\n", &asm::FileSystem).unwrap_err();
+    assert_eq!(e.to_string(), "bad.tmc:2: unknown command 'FOO'");
+    let e = asm::assemble(Path::new("bad.tmc"), "MVP XYZ, 0, 1\n", &asm::FileSystem).unwrap_err();
+    assert_eq!(e.to_string(), "bad.tmc:1: unknown symbol 'XYZ'; expected one of ABS, REL, COORD");
+    let e = asm::assemble(Path::new("bad.tmc"), "\nJA Nowhere\n", &asm::FileSystem).unwrap_err();
+    assert_eq!(e.to_string(), "bad.tmc:2: unknown symbol 'Nowhere'");
+    let e = asm::assemble(Path::new("bad.tmc"), "SAP 4, 0\n", &asm::FileSystem).unwrap_err();
+    assert_eq!(e.to_string(), "bad.tmc:1: SAP expects 3 operand(s), found 2");
+}
