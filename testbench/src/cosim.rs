@@ -159,7 +159,7 @@ impl Outcome {
         let chip = self.variant.chip();
         let mut s = String::new();
         let _ = writeln!(s, "MISMATCH at cycle {} ({}, seed {}):", m.cycle, self.variant, self.seed);
-        let _ = writeln!(s, "  {:<22} {:<20} {}", "signal", "model", "rtl");
+        let _ = writeln!(s, "  {:<22} {:<20} rtl", "signal", "model");
         for d in &m.diffs {
             let name = format!("{}.{}", d.signal.scope, d.signal.name);
             let _ = writeln!(
@@ -184,14 +184,15 @@ fn data_pin(o: &Outputs) -> u64 {
     if o.sdoz_c_oe { o.sdoz_c as u64 } else { o.nint_sdo_c as u64 }
 }
 
+/// Verilator's trace beside the VCD: name.vcd -> name.rtl.vcd, other names get .rtl.vcd appended.
 fn rtl_trace_path(vcd: &Path) -> PathBuf {
-    let mut s = vcd.as_os_str().to_owned();
-    s.push(".rtl.vcd");
-    let p = PathBuf::from(s);
-    // name.vcd -> name.rtl.vcd
     match vcd.extension() {
         Some(e) if e == "vcd" => vcd.with_extension("rtl.vcd"),
-        _ => p,
+        _ => {
+            let mut s = vcd.as_os_str().to_owned();
+            s.push(".rtl.vcd");
+            PathBuf::from(s)
+        }
     }
 }
 
@@ -240,7 +241,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
     let mut writer: Option<TraceWriter> = None;
     // cycles, frames and pin changes up to the first mismatch (the trace may run on)
     let mut counted = (0u64, 0u64, 0u64);
-    let (t_from, t_to) = trace.map(|(_, a, b)| (a, b)).unwrap_or((u64::MAX, 0));
+    let t_to = trace.map(|(_, _, b)| b).unwrap_or(0);
 
     for n in 0..cfg.cycles {
         if let Some((path, from, _)) = trace {
@@ -343,7 +344,6 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         w.finish().map_err(|e| format!("writing VCD: {e}"))?;
         rtl.trace_close();
     }
-    let _ = t_from;
     if out.mismatch.is_some() {
         (out.cycles, out.frames, out.pin_changes) = counted;
     }
@@ -360,17 +360,15 @@ pub fn run(cfg: &Config) -> Result<Outcome, String> {
     let first = simulate(cfg, Some((vcd, 0, VCD_CYCLES_WITHOUT_MISMATCH.min(cfg.cycles))))?;
     let mut out = match &first.mismatch {
         Some(m) if m.cycle > VCD_CYCLES_WITHOUT_MISMATCH.min(cfg.cycles) => {
-            // the window lies past the traced start: trace it on a second run
+            // the mismatch lies past the traced start: trace its window on a second run
             let from = m.cycle.saturating_sub(cfg.window.0);
             let to = m.cycle + cfg.window.1;
             let mut again = cfg.clone();
             again.cycles = to.min(cfg.cycles.max(m.cycle));
             let second = simulate(&again, Some((vcd, from, to)))?;
             // the report is the first run's (same stimulus, same first mismatch)
-            let mut o = first.clone();
-            o.coverage = first.coverage.clone();
             debug_assert_eq!(second.mismatch.as_ref().map(|x| x.cycle), Some(m.cycle));
-            o
+            first.clone()
         }
         _ => first,
     };

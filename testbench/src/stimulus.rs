@@ -369,7 +369,7 @@ impl Default for Driver {
 impl Driver {
     /// True when the current transaction is finished and a new one can start.
     pub fn ready(&self) -> bool {
-        self.phase == Phase::Idle && self.left == 0 || self.phase == Phase::Gap && self.left == 0
+        self.left == 0 && matches!(self.phase, Phase::Idle | Phase::Gap)
     }
 
     pub fn phase(&self) -> Phase {
