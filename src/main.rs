@@ -21,6 +21,8 @@ enum Command {
     Spi(cmd::spi::Args),
     /// Print the register map (Markdown, C header or JSON).
     Regmap(cmd::regmap::Args),
+    /// Run the golden model and the Verilated RTL in lock-step on random stimulus.
+    Cosim(cmd::cosim::Args),
     /// TMCL module layer: serve a virtual TMCM-3110, assemble and run TMCL programs.
     Tmcl(cmd::tmcl::Args),
 }
@@ -46,6 +48,7 @@ fn main() -> ExitCode {
     let res = match cli.command {
         Command::Spi(a) => cmd::spi::run(a),
         Command::Regmap(a) => cmd::regmap::run(a),
+        Command::Cosim(a) => cmd::cosim::run(a),
         Command::Tmcl(a) => cmd::tmcl::run(a),
     };
     match res {

@@ -1,5 +1,6 @@
 //! One module per subcommand.
 pub mod common;
+pub mod cosim;
 pub mod regmap;
 pub mod spi;
 pub mod tmcl;

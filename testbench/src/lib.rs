@@ -1,1 +1,18 @@
-//! Co-simulation harness (see docs/cosim.md).
+//! Co-simulation harness: the golden model and the Verilated RTL in lock-step
+//! (docs/cosim.md).
+//!
+//! - [`rtl`]: the Verilated `tmc429_top` behind a cxx bridge, one FFI call per CLK cycle;
+//! - [`signals`]: the compared pins and probes and the [`signals::Compare`] mask;
+//! - [`stimulus`]: transaction-level stimulus (proptest strategies, seeded stream, pin driver);
+//! - [`coverage`]: functional coverage bins;
+//! - [`trace`]: the side-by-side VCD;
+//! - [`cosim`]: the lock-step run and its report.
+pub mod cosim;
+pub mod coverage;
+pub mod rtl;
+pub mod signals;
+pub mod stimulus;
+pub mod trace;
+
+pub use cosim::{run, Config, Mismatch, Outcome};
+pub use rtl::{Rtl, Variant};

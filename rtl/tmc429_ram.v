@@ -1,0 +1,102 @@
+// tmc429_ram: the 128 x 6 bit configuration and microstep RAM (docs/model-contract.md C30;
+// TMC428 §10, TMC429 §11.4).
+//
+// Organised as 64 words of two cells: word w holds cell 2w in bits 5..0 and cell 2w+1 in
+// bits 11..6, as a RAM datagram addresses them (TMC428 Table 10-1). The array has no reset
+// (it maps to a RAM). The power-on contents come from a ROM: a resettable flag per word
+// says whether the word was written since reset; until then a read returns the ROM value.
+// ROM (CHIP = 1, TMC429): cells 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD
+// positions (TMC429 §11.4.2), cells 36..63 = 0, cells 64..127 = the sine table of TMC428
+// Table 12-2, y(i) = min(63, int(1/2 + 64 sin(pi i / 128))). CHIP = 0, 2: all 0.
+`default_nettype none
+
+module tmc429_ram #(
+    parameter CHIP = 1
+) (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire        we,
+    input  wire [5:0]  waddr,
+    input  wire [11:0] wdata,
+    input  wire [5:0]  raddr,
+    output wire [11:0] rdata
+);
+    reg [11:0] mem [0:63];
+    reg [63:0] written;
+
+    always @(posedge clk) begin
+        if (we)
+            mem[waddr] <= wdata;
+    end
+
+    always @(posedge clk) begin
+        if (rst)
+            written <= 64'd0;
+        else if (we)
+            written[waddr] <= 1'b1;
+    end
+
+    reg [11:0] rom;
+    always @(*) begin
+        rom = 12'h000;
+        if (CHIP == 1) begin
+            case (raddr)
+            6'd0: rom = 12'h151;
+            6'd1: rom = 12'h0C4;
+            6'd2: rom = 12'h182;
+            6'd3: rom = 12'h351;
+            6'd4: rom = 12'h2CC;
+            6'd5: rom = 12'hB8A;
+            6'd6: rom = 12'h151;
+            6'd7: rom = 12'h0C4;
+            6'd8: rom = 12'h182;
+            6'd9: rom = 12'h351;
+            6'd10: rom = 12'h2CC;
+            6'd11: rom = 12'hB8A;
+            6'd12: rom = 12'h151;
+            6'd13: rom = 12'h0C4;
+            6'd14: rom = 12'h182;
+            6'd15: rom = 12'h351;
+            6'd16: rom = 12'h2CC;
+            6'd17: rom = 12'hB8A;
+            6'd32: rom = 12'h080;
+            6'd33: rom = 12'h143;
+            6'd34: rom = 12'h206;
+            6'd35: rom = 12'h2C9;
+            6'd36: rom = 12'h38C;
+            6'd37: rom = 12'h450;
+            6'd38: rom = 12'h513;
+            6'd39: rom = 12'h5D6;
+            6'd40: rom = 12'h698;
+            6'd41: rom = 12'h75B;
+            6'd42: rom = 12'h81E;
+            6'd43: rom = 12'h8A1;
+            6'd44: rom = 12'h964;
+            6'd45: rom = 12'h9E6;
+            6'd46: rom = 12'hAA9;
+            6'd47: rom = 12'hB2B;
+            6'd48: rom = 12'hBAD;
+            6'd49: rom = 12'hC2F;
+            6'd50: rom = 12'hCB1;
+            6'd51: rom = 12'hD33;
+            6'd52: rom = 12'hDB5;
+            6'd53: rom = 12'hE37;
+            6'd54: rom = 12'hE78;
+            6'd55: rom = 12'hEFA;
+            6'd56: rom = 12'hF3B;
+            6'd57: rom = 12'hF7C;
+            6'd58: rom = 12'hFBD;
+            6'd59: rom = 12'hFBE;
+            6'd60: rom = 12'hFFF;
+            6'd61: rom = 12'hFFF;
+            6'd62: rom = 12'hFFF;
+            6'd63: rom = 12'hFFF;
+            default: rom = 12'h000;
+            endcase
+        end
+    end
+
+    assign rdata = written[raddr] ? mem[raddr] : rom;
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,46 @@
+// tmc429_refsw: reference switch mapping (docs/model-contract.md C60; TMC428 Table 9-3,
+// TMC429 §8.2.4, TMC4210 §1.5.4).
+//
+// From the synchronized pins: inv_ref inverts every REF/REFR input first. refmux = 0,
+// mot1r = 0: Ln = REFn, and on the TMC429 with en_refr = 1 Rn = REFRn, else no right
+// switches. mot1r = 1: L1 = REF1, L2 = REF2, R1 = REF3, motor 3 has no switches. A missing
+// switch reads inactive (0). TMC4210: L1 = REF_L (REF1), L2 = GP_IN (REF2), R1 = REF_R
+// (REF3) with mot1r = 1, no refmux and no REFR inputs. refmux = 1 samples the switches through the 74HC157 on
+// nSCS_S, which belongs to the driver chain; until the chain is built L and R read 0 with
+// refmux = 1 (the co-simulation keeps refmux = 0, see docs/cosim.md).
+`default_nettype none
+
+module tmc429_refsw #(
+    parameter CHIP = 1
+) (
+    input  wire [2:0] ref_q,    // REF3..REF1, synchronized
+    input  wire [2:0] refr_q,   // REFR3..REFR1, synchronized
+    input  wire       inv_ref,
+    input  wire       en_refr,
+    input  wire       refmux,
+    input  wire       mot1r,
+    output reg  [2:0] l,        // L3..L1
+    output reg  [2:0] r         // R3..R1
+);
+    wire [2:0] rf  = ref_q  ^ {3{inv_ref}};
+    wire [2:0] rfr = refr_q ^ {3{inv_ref}};
+
+    always @(*) begin
+        if (CHIP == 2) begin
+            // TMC4210: REF_L = REF1 (l1), GP_IN = REF2 (read as l2), REF_R = REF3 with mot1r
+            l = {1'b0, rf[1], rf[0]};
+            r = {2'b00, rf[2] & mot1r};
+        end else if (refmux) begin
+            l = 3'b000;
+            r = 3'b000;
+        end else if (mot1r) begin
+            l = {1'b0, rf[1], rf[0]};
+            r = {2'b00, rf[2]};
+        end else begin
+            l = rf;
+            r = (CHIP == 1 && en_refr) ? rfr : 3'b000;
+        end
+    end
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,215 @@
+// tmc429_regfile: the register file (docs/model-contract.md C20-C31, C63-C66; TMC428 §7-§9,
+// TMC429 §8) without the motion core and the driver chain behind it.
+//
+// Executes the 32-bit datagram `cmd` when `exec` pulses (C12), serves the read port of the
+// SPI slave (data of the old state), builds the status byte, the interrupt output, the
+// position compare and the power-down state. Per CHIP (0 TMC428, 1 TMC429, 2 TMC4210) the
+// registers a variant lacks read 0 and ignore writes (C21).
+`default_nettype none
+
+module tmc429_regfile #(
+    parameter CHIP = 1
+) (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire        exec,
+    input  wire [31:0] cmd,
+    input  wire        frame_start,   // synchronized nSCS_C falling edge: wake-up (C66)
+    input  wire [6:0]  rd_addr,
+    output reg  [23:0] rd_data,
+    input  wire [2:0]  ref_q,         // synchronized REF3..1
+    input  wire [2:0]  refr_q,        // synchronized REFR3..1
+    output wire [7:0]  status,        // INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1
+    output reg         nint_q,        // nINT, registered from the state before the edge (C11)
+    output wire        sdo_int,       // if_configuration sdo_int (TMC429/TMC4210)
+    output reg         poscmp_q,      // position compare match, registered (C65)
+    output reg         pd,            // powered down
+    output reg  [19:0] prescaler,     // free-running CLK counter (C40), 20 bits as the model
+    // probes
+    output wire [23:0] m0_x_target, m1_x_target, m2_x_target,
+    output wire [23:0] m0_x_actual, m1_x_actual, m2_x_actual,
+    output wire [11:0] m0_v_actual, m1_v_actual, m2_v_actual,
+    output wire [11:0] m0_v_target, m1_v_target, m2_v_target,
+    output wire [7:0]  m0_ustep, m1_ustep, m2_ustep
+);
+    localparam HAS_CHAIN = (CHIP != 2);   // JDX 0..3 (driver chain), TMC4210: absent
+    localparam HAS_429   = (CHIP != 0);   // JDX 4, 5, 6, 9
+    localparam HAS_RAM   = (CHIP != 2);   // TMC4210: no driver chain, no RAM
+
+    // ---- datagram decode ------------------------------------------------------------
+    wire [6:0]  a7    = cmd[31:25];
+    wire        wr    = exec & ~cmd[24];
+    wire [23:0] wdata = cmd[23:0];
+    wire        wr_g  = wr & (a7[6:4] == 3'b011);       // global register
+    wire [3:0]  jdx   = a7[3:0];
+    wire        wr_ram = wr & a7[6] & HAS_RAM;
+
+    // ---- global registers -----------------------------------------------------------
+    reg        dw;             // datagram waiting (JDX 0/1 write), CDGW
+    reg        cw;             // cover datagram waiting
+    reg [5:0]  cover_pos;
+    reg [4:0]  cover_len;
+    reg [23:0] cover_datagram;
+    reg [8:0]  if_conf;        // en_refr, pos_comp_sel[1:0], en_sd, inv_dir, inv_stp, step_half, sdo_int, inv_ref
+    reg [23:0] pos_comp;
+    reg        pc_i, pc_m, pc_hist;
+    reg [7:0]  gp_low;         // $7E bits 7..0
+    reg [7:0]  clk2_div;
+    reg        cont_update, refmux, mot1r;
+
+    // everything behind the SPI slave stops while powered down; the waking edge itself
+    // still counts as powered down (the wake-up takes effect in its new state)
+    wire run = ~pd;
+    wire int_o;
+
+    // ---- switches -------------------------------------------------------------------
+    wire [2:0] sw_l, sw_r;
+    tmc429_refsw #(.CHIP(CHIP)) u_refsw (
+        .ref_q(ref_q), .refr_q(refr_q),
+        .inv_ref(if_conf[0]), .en_refr(if_conf[8]), .refmux(refmux), .mot1r(mot1r),
+        .l(sw_l), .r(sw_r));
+
+    // ---- motors -----------------------------------------------------------------------
+    wire [23:0] m_rdata [0:2];
+    wire [2:0]  xeqt, irq;
+    wire        m_present1 = (CHIP != 2);
+
+    tmc429_motor_regs #(.CHIP(CHIP)) u_m0 (
+        .clk(clk), .rst(rst), .run(run),
+        .we(wr & (a7[6:4] == 3'b000)), .widx(a7[3:0]), .wdata(wdata),
+        .ridx(rd_addr[3:0]), .rdata(m_rdata[0]),
+        .sw_l(sw_l[0]), .sw_r(sw_r[0]), .xeqt(xeqt[0]), .irq(irq[0]),
+        .x_target(m0_x_target), .x_actual(m0_x_actual), .v_actual(m0_v_actual),
+        .v_target(m0_v_target), .ustep(m0_ustep));
+    tmc429_motor_regs #(.CHIP(CHIP)) u_m1 (
+        .clk(clk), .rst(rst), .run(run),
+        .we(wr & m_present1 & (a7[6:4] == 3'b001)), .widx(a7[3:0]), .wdata(wdata),
+        .ridx(rd_addr[3:0]), .rdata(m_rdata[1]),
+        .sw_l(sw_l[1]), .sw_r(sw_r[1]), .xeqt(xeqt[1]), .irq(irq[1]),
+        .x_target(m1_x_target), .x_actual(m1_x_actual), .v_actual(m1_v_actual),
+        .v_target(m1_v_target), .ustep(m1_ustep));
+    tmc429_motor_regs #(.CHIP(CHIP)) u_m2 (
+        .clk(clk), .rst(rst), .run(run),
+        .we(wr & m_present1 & (a7[6:4] == 3'b010)), .widx(a7[3:0]), .wdata(wdata),
+        .ridx(rd_addr[3:0]), .rdata(m_rdata[2]),
+        .sw_l(sw_l[2]), .sw_r(sw_r[2]), .xeqt(xeqt[2]), .irq(irq[2]),
+        .x_target(m2_x_target), .x_actual(m2_x_actual), .v_actual(m2_v_actual),
+        .v_target(m2_v_target), .ustep(m2_ustep));
+
+    // ---- position compare (C65) -------------------------------------------------------
+    reg [23:0] pc_x;
+    always @(*) begin
+        case (if_conf[7:6])
+        2'd0:    pc_x = m0_x_actual;
+        2'd1:    pc_x = m1_x_actual;
+        default: pc_x = m2_x_actual;   // 3 selects motor 3 as well
+        endcase
+    end
+    wire pc_match = HAS_429 && (pc_x == pos_comp);
+    wire pc_event = run & pc_match & ~pc_hist;
+    wire w_pcint  = wr_g & HAS_429 & (jdx == 4'd6);
+    wire pc_m_nx  = w_pcint ? wdata[8] : pc_m;
+    wire pc_w1c   = w_pcint & wdata[0];
+
+    assign sdo_int = HAS_429 && if_conf[1];
+    assign int_o   = (|irq) | (pc_i & pc_m);
+    // RSn = Ln ([429] §6.2.2.2, C60)
+`ifdef PLANT_BUG_STATUS
+    // Planted bug for the co-simulation self-test (testbench/tests/planted_bug.rs):
+    // CDGW forgets the datagram-waiting flag of a datagram_low/high write.
+    assign status  = {int_o, cw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
+`else
+    assign status  = {int_o, cw | dw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
+`endif
+
+    always @(posedge clk) begin
+        if (rst) begin
+            dw <= 1'b0;  cw <= 1'b0;
+            cover_pos <= 6'd0;  cover_len <= 5'd0;  cover_datagram <= 24'd0;
+            if_conf <= 9'd0;  pos_comp <= 24'd0;
+            pc_i <= 1'b0;  pc_m <= 1'b0;  pc_hist <= HAS_429;   // match holds at reset
+            gp_low <= 8'd0;  clk2_div <= 8'd15;
+            cont_update <= 1'b0;  refmux <= 1'b0;  mot1r <= 1'b0;
+            pd <= 1'b0;
+            prescaler <= 20'd0;
+            nint_q <= 1'b1;
+            poscmp_q <= HAS_429;
+        end else begin
+            nint_q   <= ~int_o;
+            poscmp_q <= pc_match;
+            if (run) begin
+                prescaler <= prescaler + 20'd1;
+                pc_hist   <= pc_match;
+            end
+            pc_m <= pc_m_nx;
+            pc_i <= ((pc_i & ~pc_w1c) | pc_event) & pc_m_nx;
+            if (frame_start)
+                pd <= 1'b0;
+            if (wr_g) begin
+                case (jdx)
+                4'd0, 4'd1: if (HAS_CHAIN) dw <= 1'b1;    // datagram_low/high: arm CDGW
+                4'd2: if (HAS_CHAIN) begin
+                          cover_pos <= wdata[13:8];
+                          cover_len <= wdata[4:0];
+                      end
+                4'd3: if (HAS_CHAIN) begin
+                          cover_datagram <= wdata;
+                          cw <= 1'b1;
+                      end
+                4'd4: if (HAS_429) if_conf <= wdata[8:0];
+                4'd5: if (HAS_429) pos_comp <= wdata;
+                4'd8: pd <= 1'b1;
+                4'd15: begin
+                          mot1r <= wdata[21];
+                          if (CHIP == 2) begin
+                              clk2_div[3:0] <= wdata[11:8];   // C31: STPDIV only
+                          end else begin
+                              gp_low <= wdata[7:0];
+                              clk2_div <= wdata[15:8];
+                              cont_update <= wdata[16];
+                              refmux <= wdata[20];
+                          end
+                      end
+                default: ;
+                endcase
+            end
+        end
+    end
+
+    // ---- RAM (C30) --------------------------------------------------------------------
+    wire [11:0] ram_rdata;
+    tmc429_ram #(.CHIP(CHIP)) u_ram (
+        .clk(clk), .rst(rst),
+        .we(wr_ram), .waddr(a7[5:0]), .wdata({wdata[13:8], wdata[5:0]}),
+        .raddr(rd_addr[5:0]), .rdata(ram_rdata));
+
+    // ---- read mux ---------------------------------------------------------------------
+    always @(*) begin
+        rd_data = 24'd0;
+        if (rd_addr[6]) begin
+            rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
+        end else if (rd_addr[5:4] == 2'b00) begin
+            rd_data = m_rdata[0];
+        end else if (rd_addr[5:4] == 2'b01) begin
+            rd_data = m_present1 ? m_rdata[1] : 24'd0;
+        end else if (rd_addr[5:4] == 2'b10) begin
+            rd_data = m_present1 ? m_rdata[2] : 24'd0;
+        end else begin
+            case (rd_addr[3:0])
+            // datagram_low/high: the readback shift register belongs to the driver chain
+            4'd2:  rd_data = HAS_CHAIN ? {cw, 9'd0, cover_pos + 6'd1, 3'd0, cover_len} : 24'd0;
+            4'd3:  rd_data = HAS_CHAIN ? cover_datagram : 24'd0;
+            4'd4:  rd_data = HAS_429 ? {15'd0, if_conf} : 24'd0;
+            4'd5:  rd_data = HAS_429 ? pos_comp : 24'd0;
+            4'd6:  rd_data = HAS_429 ? {15'd0, pc_m, 7'd0, pc_i} : 24'd0;
+            4'd9:  rd_data = HAS_429 ? 24'h429101 : 24'd0;   // type_version (C29)
+            4'd14: rd_data = {18'd0, sw_l[2], sw_r[2], sw_l[1], sw_r[1], sw_l[0], sw_r[0]};
+            4'd15: rd_data = (CHIP == 2) ? {2'd0, mot1r, 9'd0, clk2_div[3:0], 8'd0}
+                                         : {2'd0, mot1r, refmux, 3'd0, cont_update, clk2_div, gp_low};
+            default: rd_data = 24'd0;   // power_down reads 0; unused addresses
+            endcase
+        end
+    end
+endmodule
+
+`default_nettype wire

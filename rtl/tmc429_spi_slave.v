@@ -1,0 +1,92 @@
+// tmc429_spi_slave: the µC SPI port (docs/model-contract.md C10-C13; TMC428 §6.2).
+//
+// nSCS_C, SCK_C and SDI_C pass tmc429_sync (C4). The frame starts at the synchronized
+// falling edge of nSCS_C: the bit counter clears and the status byte is loaded into
+// bits 31..24 of the output register. Each synchronized rising SCK_C edge while nSCS_C
+// is low shifts SDI_C in (MSB first, counter saturates at 63); when the 8th bit is in
+// and RW = 1 the read data is loaded in the same cycle, where data bit 23 leaves on the
+// next falling edge. Each synchronized falling SCK_C edge after the first bit shifts the
+// output register left (the first falling edge presents bit 31, already on the pin). An SCK_C
+// edge in the cycle of the nSCS_C falling edge is ignored (C13). At the synchronized
+// rising edge of nSCS_C a frame of exactly 32 bits is executed (`exec` pulse).
+`default_nettype none
+
+module tmc429_spi_slave (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire        nscs_c,
+    input  wire        sck_c,
+    input  wire        sdi_c,
+    // status byte of the old state, loaded at the start of a frame
+    input  wire [7:0]  status,
+    // read port: address of the frame being received, data of the old state
+    output wire [6:0]  rd_addr,
+    input  wire [23:0] rd_data,
+    // synchronized nSCS_C falling edge (frame start, wake-up from power down)
+    output wire        frame_start,
+    // one-cycle pulse: execute `cmd` (a 32-bit frame ended)
+    output wire        exec,
+    output wire [31:0] cmd,
+    // 1 while the frame is active (output register drives the data pin)
+    output wire        active,
+    // current data bit
+    output wire        sdo
+);
+    wire nscs_q, nscs_h, sck_q, sck_h, sdi_q;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire sdi_h;   // SDI_C is sampled, not edge-detected: its history flop is unused
+    /* verilator lint_on UNUSEDSIGNAL */
+
+    tmc429_sync #(.W(1), .RST(1'b1)) u_sync_nscs (
+        .clk(clk), .rst(rst), .d(nscs_c), .q(nscs_q), .h(nscs_h));
+    tmc429_sync #(.W(1), .RST(1'b1)) u_sync_sck (
+        .clk(clk), .rst(rst), .d(sck_c), .q(sck_q), .h(sck_h));
+    tmc429_sync #(.W(1), .RST(1'b0)) u_sync_sdi (
+        .clk(clk), .rst(rst), .d(sdi_c), .q(sdi_q), .h(sdi_h));
+
+    reg [31:0] in_sr;
+    reg [31:0] out_sr;
+    reg [5:0]  cnt;
+
+    wire nscs_fall = ~nscs_q & nscs_h;
+    wire nscs_rise = nscs_q & ~nscs_h;
+    wire sel       = ~nscs_q & ~nscs_h;   // low, and not the cycle of the falling edge (C13)
+    wire sck_rise  = sel & sck_q & ~sck_h;
+    // the first falling edge presents bit 31, which is already out (SPI mode 3)
+    wire sck_fall  = sel & ~sck_q & sck_h & (cnt != 6'd0);
+
+    wire [31:0] in_next = {in_sr[30:0], sdi_q};
+    // the 8th bit arrives now and it is a read
+    wire        rd_load = sck_rise & (cnt == 6'd7) & sdi_q;
+
+    assign rd_addr     = in_next[7:1];
+    assign frame_start = nscs_fall;
+    assign exec        = nscs_rise & (cnt == 6'd32);
+    assign cmd         = in_sr;
+    assign active      = ~nscs_h;
+    assign sdo         = out_sr[31];
+
+    always @(posedge clk) begin
+        if (rst) begin
+            in_sr  <= 32'd0;
+            out_sr <= 32'd0;
+            cnt    <= 6'd0;
+        end else if (nscs_fall) begin
+            cnt    <= 6'd0;
+            out_sr <= {status, 24'd0};
+        end else begin
+            if (sck_rise) begin
+                in_sr <= in_next;
+                if (cnt != 6'd63)
+                    cnt <= cnt + 6'd1;
+            end
+            if (rd_load)
+                // after 7 falling edges the reply's bit 23 sits at bit 30
+                out_sr <= {out_sr[31], rd_data, 7'd0};
+            else if (sck_fall)
+                out_sr <= {out_sr[30:0], 1'b0};
+        end
+    end
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,121 @@
+//! Builds the Verilated RTL models and the cxx bridge (docs/cosim.md).
+//!
+//! For each variant, Debian's `verilator --cc --trace` translates rtl/tmc429_*.v into C++
+//! (one model per CHIP value, plus a model with a planted bug for the harness self-test).
+//! The generated C++, Verilator's runtime and the bridge (cpp/rtl_bridge.cc) are compiled
+//! with cxx-build at -O2, also in debug builds.
+
+use std::env;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// (prefix, CHIP parameter, extra Verilog defines)
+const VARIANTS: &[(&str, u32, &[&str])] = &[
+    ("Vtmc429_428", 0, &[]),
+    ("Vtmc429_429", 1, &[]),
+    ("Vtmc429_4210", 2, &[]),
+    ("Vtmc429_429_bug_status", 1, &["PLANT_BUG_STATUS"]),
+];
+
+const VERILATOR_INCLUDE: &str = "/usr/share/verilator/include";
+
+fn main() {
+    let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap());
+    let rtl_dir = manifest.join("../rtl");
+    let out = PathBuf::from(env::var("OUT_DIR").unwrap());
+    let mdir = out.join("vl");
+    // stale files of an older RTL (other module hashes) would be compiled in as well
+    let _ = fs::remove_dir_all(&mdir);
+    fs::create_dir_all(&mdir).expect("create Verilator output directory");
+
+    let mut sources: Vec<PathBuf> = fs::read_dir(&rtl_dir)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", rtl_dir.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.extension().is_some_and(|x| x == "v")
+                && p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("tmc429_"))
+        })
+        .collect();
+    sources.sort();
+    println!("cargo:rerun-if-changed={}", rtl_dir.display());
+    for s in &sources {
+        println!("cargo:rerun-if-changed={}", s.display());
+    }
+    println!("cargo:rerun-if-changed=cpp/rtl_bridge.h");
+    println!("cargo:rerun-if-changed=cpp/rtl_bridge.cc");
+    println!("cargo:rerun-if-changed=src/rtl.rs");
+
+    let verilator = env::var("VERILATOR").unwrap_or_else(|_| "verilator".into());
+    let mut generated = Vec::new();
+    for (prefix, chip, defines) in VARIANTS {
+        let mut cmd = Command::new(&verilator);
+        cmd.arg("--cc")
+            .arg("--trace")
+            .arg("-O3")
+            .arg("-Wno-fatal")
+            .arg("--x-assign")
+            .arg("fast")
+            .arg("--x-initial")
+            .arg("fast")
+            .arg("--top-module")
+            .arg("tmc429_top")
+            .arg(format!("-GCHIP={chip}"))
+            .arg("--prefix")
+            .arg(prefix)
+            .arg("-Mdir")
+            .arg(&mdir);
+        for d in *defines {
+            cmd.arg(format!("-D{d}"));
+        }
+        cmd.args(&sources);
+        let status = cmd.status().unwrap_or_else(|e| {
+            panic!("cannot run `{verilator}` ({e}); install Verilator 5 (scripts/setup)")
+        });
+        assert!(status.success(), "verilator failed for {prefix}");
+        generated.extend(generated_sources(&mdir, prefix));
+    }
+
+    let inc = Path::new(VERILATOR_INCLUDE);
+    let mut build = cxx_build::bridge("src/rtl.rs");
+    build
+        .file("cpp/rtl_bridge.cc")
+        .files(&generated)
+        .file(inc.join("verilated.cpp"))
+        .file(inc.join("verilated_threads.cpp"))
+        .file(inc.join("verilated_vcd_c.cpp"))
+        .include(&mdir)
+        .include(inc)
+        .include(inc.join("vltstd"))
+        .std("c++17")
+        .opt_level(2)
+        .debug(false)
+        .warnings(false)
+        .define("VM_COVERAGE", "0")
+        .define("VM_SC", "0")
+        .define("VM_TRACE", "1")
+        .define("VM_TRACE_VCD", "1")
+        .define("VM_TRACE_FST", "0")
+        .define("VM_TIMING", "0")
+        .flag_if_supported("-faligned-new")
+        .flag_if_supported("-fno-math-errno");
+    build.compile("tmc429_vrtl");
+    println!("cargo:rustc-link-lib=pthread");
+}
+
+/// The .cpp files Verilator generated for one prefix.
+fn generated_sources(mdir: &Path, prefix: &str) -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = fs::read_dir(mdir)
+        .expect("read Verilator output")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            name.ends_with(".cpp")
+                && (name == format!("{prefix}.cpp")
+                    || name.starts_with(&format!("{prefix}__"))
+                    || name.starts_with(&format!("{prefix}___")))
+        })
+        .collect();
+    v.sort();
+    v
+}

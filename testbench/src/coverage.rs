@@ -1,0 +1,314 @@
+//! Functional coverage of the co-simulation: named bins, counted while the regression runs
+//! (docs/cosim.md lists them).
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+use tmc429_model::regmap::{self, Addr};
+use tmc429_model::{Chip, Outputs, Probes, Tmc429};
+
+use crate::stimulus::{Frame, PinLevels, Profile, MIN_HALF};
+
+/// Interrupt flag names, bit 0 first ([428] Table 8-7).
+pub const FLAG_NAMES: [&str; 8] = [
+    "POS_END", "REF_WRONG", "REF_MISS", "STOP", "STOP_LEFT_LOW", "STOP_RIGHT_LOW",
+    "STOP_LEFT_HIGH", "STOP_RIGHT_HIGH",
+];
+
+/// Name of a register address for reports: `x_target[1]` (motor 1..3 as in the datasheet),
+/// `ram_microstep_table[word 40]`, `unused $37`.
+pub fn reg_name(chip: Chip, a7: u8) -> String {
+    let a7 = a7 & 0x7F;
+    match regmap::lookup(chip, a7) {
+        Some((r, Some(m))) => format!("{}[{}]", r.name, m + 1),
+        Some((r, None)) => match Addr::from_a7(a7) {
+            Addr::Ram(a) => format!("{}[word {}]", r.name, a),
+            _ => r.name.to_string(),
+        },
+        None => format!("unused ${a7:02X}"),
+    }
+}
+
+/// Counted bins; only registered bins count.
+#[derive(Clone, Debug, Default)]
+pub struct Coverage {
+    bins: BTreeMap<String, u64>,
+    last_flags: [u8; 3],
+    last_cover_pos: u8,
+    last_power_down: bool,
+    last_poscmp: Option<bool>,
+    last_pins: Option<PinLevels>,
+}
+
+impl Coverage {
+    /// The bins of this blocks for a chip under a stimulus profile.
+    pub fn new(chip: Chip, profile: Profile) -> Coverage {
+        let mut names: Vec<String> = Vec::new();
+        let mut unused = false;
+        for a7 in 0u8..0x40 {
+            match regmap::lookup(chip, a7) {
+                Some((r, _)) => {
+                    let n = reg_name(chip, a7);
+                    let writable_in_profile =
+                        !(profile == Profile::Registers && r.name == "cover_datagram");
+                    if writable_in_profile {
+                        names.push(format!("write {n}"));
+                    }
+                    names.push(format!("read {n}"));
+                }
+                None => unused = true,
+            }
+        }
+        if unused {
+            names.push("write unused address".into());
+            names.push("read unused address".into());
+        }
+        if regmap::lookup(chip, 0x40).is_some() {
+            for w in 0..64 {
+                names.push(format!("ram write word {w}"));
+                names.push(format!("ram read word {w}"));
+            }
+        }
+        for n in [
+            "frame short (1..31 bits, not executed)",
+            "frame 8 bits (status byte only)",
+            "frame long (33..64 bits, not executed)",
+            "frame back-to-back (nSCS_C high 3 CLK)",
+            "frame SCK_C half period 3 CLK (fastest)",
+            "frame SCK_C half period >= 32 CLK (slow)",
+            "power down",
+            "wake-up by nSCS_C",
+            "x_latched write arms lp",
+            "pmul bit 15 reads 1",
+            "INT in status byte",
+            "interrupt flags cleared by writing 1",
+            "interrupt flags forced 0 by the mask",
+            "REF pin change",
+            "SDI_S pin change",
+        ] {
+            names.push(n.into());
+        }
+        for (k, f) in FLAG_NAMES.iter().enumerate() {
+            // STOP needs a moving motor: not in the register profile
+            if k == 3 && profile == Profile::Registers {
+                continue;
+            }
+            names.push(format!("interrupt flag {f} set"));
+        }
+        let switch_bits: &[&str] = match chip {
+            Chip::Tmc428 => &["r1", "l1", "l2", "l3"],
+            Chip::Tmc429 => &["r1", "l1", "r2", "l2", "r3", "l3"],
+            Chip::Tmc4210 => &["r1 (REF_R)", "l1 (REF_L)", "l2 (GP_IN)"],
+        };
+        for s in switch_bits {
+            names.push(format!("ref_switches {s} active"));
+        }
+        if chip != Chip::Tmc4210 {
+            names.push("CDGW armed by a datagram_low/high write".into());
+            names.push("cover_pos 63 reads back 0".into());
+        }
+        if chip != Chip::Tmc428 {
+            for n in [
+                "type_version reads $429101",
+                "pos_comp match sets I",
+                "POSCMP pin rises",
+                "POSCMP pin falls",
+                "sdo_int: frame with data on SDOZ_C only",
+                "inv_ref inverts the switches",
+            ] {
+                names.push(n.into());
+            }
+        }
+        if chip == Chip::Tmc429 {
+            names.push("REFR pin change".into());
+            names.push("en_refr: REFR switches read".into());
+        }
+        Coverage {
+            bins: names.into_iter().map(|n| (n, 0)).collect(),
+            last_power_down: false,
+            ..Coverage::default()
+        }
+    }
+
+    #[inline]
+    pub fn hit(&mut self, bin: &str) {
+        if let Some(c) = self.bins.get_mut(bin) {
+            *c += 1;
+        }
+    }
+
+    pub fn bins(&self) -> &BTreeMap<String, u64> {
+        &self.bins
+    }
+
+    /// Bins never hit.
+    pub fn missed(&self) -> Vec<&str> {
+        self.bins.iter().filter(|(_, c)| **c == 0).map(|(n, _)| n.as_str()).collect()
+    }
+
+    /// A frame ended; `reply` is what the model sent back (bit 31 first, `nbits` bits).
+    pub fn frame(&mut self, chip: Chip, f: &Frame, reply: u64, model: &Tmc429) {
+        if f.nbits < 32 {
+            self.hit("frame short (1..31 bits, not executed)");
+        }
+        if f.nbits == 8 {
+            self.hit("frame 8 bits (status byte only)");
+        }
+        if f.nbits > 32 {
+            self.hit("frame long (33..64 bits, not executed)");
+        }
+        if f.gap == MIN_HALF {
+            self.hit("frame back-to-back (nSCS_C high 3 CLK)");
+        }
+        if f.half == MIN_HALF {
+            self.hit("frame SCK_C half period 3 CLK (fastest)");
+        }
+        if f.half >= 32 {
+            self.hit("frame SCK_C half period >= 32 CLK (slow)");
+        }
+        if f.nbits >= 8 {
+            let status = (reply >> (f.nbits as u32 - 8)) as u8;
+            if status & 0x80 != 0 {
+                self.hit("INT in status byte");
+            }
+            if status & 0x40 != 0 {
+                self.hit("CDGW armed by a datagram_low/high write");
+            }
+        }
+        let g = model.global();
+        if f.nbits == 32 && chip != Chip::Tmc428 && g.ifconf & 2 != 0 {
+            self.hit("sdo_int: frame with data on SDOZ_C only");
+        }
+        if !f.executes() {
+            return;
+        }
+        let a7 = f.a7();
+        let present = regmap::lookup(chip, a7).is_some();
+        let data = (reply & 0xFF_FFFF) as u32;
+        if a7 >= 0x40 {
+            if present {
+                let w = a7 & 0x3F;
+                let n = if f.is_read() { format!("ram read word {w}") } else { format!("ram write word {w}") };
+                self.hit(&n);
+            }
+            return;
+        }
+        if !present {
+            self.hit(if f.is_read() { "read unused address" } else { "write unused address" });
+            return;
+        }
+        let name = reg_name(chip, a7);
+        self.hit(&format!("{} {}", if f.is_read() { "read" } else { "write" }, name));
+        let motor = (a7 >> 4) as usize;
+        let idx = a7 & 0xF;
+        if f.is_read() {
+            match (a7 < 0x30, idx) {
+                (true, 9) if data & 0x8000 != 0 => self.hit("pmul bit 15 reads 1"),
+                (true, 10) if data & 0x1_0000 != 0 => self.hit("x_latched write arms lp"),
+                (true, 11) => {
+                    self.last_flags[motor] = data as u8;
+                    for (k, fl) in FLAG_NAMES.iter().enumerate() {
+                        if data >> k & 1 == 1 {
+                            self.hit(&format!("interrupt flag {fl} set"));
+                        }
+                    }
+                }
+                (false, 2) if self.last_cover_pos == 63 && (data >> 8) & 63 == 0 => {
+                    self.hit("cover_pos 63 reads back 0")
+                }
+                (false, 6) if data & 1 == 1 => self.hit("pos_comp match sets I"),
+                (false, 9) if data == 0x429101 => self.hit("type_version reads $429101"),
+                (false, 14) => {
+                    let names: &[(u32, &str)] = match chip {
+                        Chip::Tmc4210 => &[(0, "r1 (REF_R)"), (1, "l1 (REF_L)"), (3, "l2 (GP_IN)")],
+                        _ => &[(0, "r1"), (1, "l1"), (2, "r2"), (3, "l2"), (4, "r3"), (5, "l3")],
+                    };
+                    for (b, n) in names {
+                        if data >> b & 1 == 1 {
+                            self.hit(&format!("ref_switches {n} active"));
+                        }
+                    }
+                    if chip != Chip::Tmc428 && g.ifconf & 1 != 0 {
+                        self.hit("inv_ref inverts the switches");
+                    }
+                    if chip == Chip::Tmc429 && g.ifconf & 0x100 != 0 && g.gconf & (1 << 21 | 1 << 20) == 0 {
+                        self.hit("en_refr: REFR switches read");
+                    }
+                }
+                _ => {}
+            }
+        } else {
+            let wdata = f.data();
+            match (a7 < 0x30, idx) {
+                (true, 11) => {
+                    let flags = self.last_flags[motor];
+                    if flags & wdata as u8 != 0 {
+                        self.hit("interrupt flags cleared by writing 1");
+                    }
+                    if flags & !((wdata >> 8) as u8) != 0 {
+                        self.hit("interrupt flags forced 0 by the mask");
+                    }
+                }
+                (false, 2) => self.last_cover_pos = ((wdata >> 8) & 63) as u8,
+                _ => {}
+            }
+        }
+    }
+
+    /// Called every cycle with the model's state after the tick.
+    #[inline]
+    pub fn cycle(&mut self, o: &Outputs, p: &Probes) {
+        let pd = p.power_down != 0;
+        if pd != self.last_power_down {
+            self.hit(if pd { "power down" } else { "wake-up by nSCS_C" });
+            self.last_power_down = pd;
+        }
+        if self.last_poscmp != Some(o.poscmp) {
+            if let Some(prev) = self.last_poscmp {
+                self.hit(if prev { "POSCMP pin falls" } else { "POSCMP pin rises" });
+            }
+            self.last_poscmp = Some(o.poscmp);
+        }
+    }
+
+    /// A pin-change transaction.
+    pub fn pins(&mut self, l: &PinLevels) {
+        if let Some(p) = self.last_pins {
+            if p.ref_ != l.ref_ {
+                self.hit("REF pin change");
+            }
+            if p.refr != l.refr {
+                self.hit("REFR pin change");
+            }
+            if p.sdi_s != l.sdi_s {
+                self.hit("SDI_S pin change");
+            }
+        }
+        self.last_pins = Some(*l);
+    }
+
+    /// Starting pin levels (the driver's idle levels).
+    pub fn set_initial_pins(&mut self, l: PinLevels) {
+        self.last_pins = Some(l);
+    }
+
+    /// The coverage table: every bin with its count, then the bins never hit.
+    pub fn table(&self) -> String {
+        let mut s = String::new();
+        let width = self.bins.keys().map(|k| k.len()).max().unwrap_or(0);
+        let _ = writeln!(s, "coverage: {} bins, {} hit", self.bins.len(), self.bins.len() - self.missed().len());
+        for (n, c) in &self.bins {
+            let _ = writeln!(s, "  {n:<width$}  {c}");
+        }
+        let missed = self.missed();
+        if missed.is_empty() {
+            let _ = writeln!(s, "bins never hit: none");
+        } else {
+            let _ = writeln!(s, "bins never hit ({}):", missed.len());
+            for n in missed {
+                let _ = writeln!(s, "  {n}");
+            }
+        }
+        s
+    }
+}

@@ -1,0 +1,249 @@
+//! The Verilated RTL (rtl/tmc429_top.v) behind a cxx bridge: one FFI call per CLK cycle.
+
+use std::fmt;
+use std::path::Path;
+
+use tmc429_model::{ChainProbe, Chip, Inputs, MotorProbe, Outputs, Probes};
+
+#[cxx::bridge(namespace = "tmc429tb")]
+mod ffi {
+    /// Mirror of `tmc429_model::Inputs`.
+    #[derive(Clone, Copy, Debug, Default)]
+    struct RtlInputs {
+        nscs_c: bool,
+        sck_c: bool,
+        sdi_c: bool,
+        sdi_s: bool,
+        ref1: bool,
+        ref2: bool,
+        ref3: bool,
+        refr1: bool,
+        refr2: bool,
+        refr3: bool,
+    }
+
+    /// Mirror of `tmc429_model::Outputs`.
+    #[derive(Clone, Copy, Debug, Default)]
+    struct RtlOutputs {
+        nint_sdo_c: bool,
+        sdoz_c: bool,
+        sdoz_c_oe: bool,
+        nscs_s: bool,
+        sck_s: bool,
+        sdo_s: bool,
+        sdi_s_o: bool,
+        sdi_s_oe: bool,
+        nscs2: bool,
+        nscs3: bool,
+        poscmp: bool,
+    }
+
+    /// Mirror of `tmc429_model::MotorProbe`.
+    #[derive(Clone, Copy, Debug, Default)]
+    struct RtlMotorProbe {
+        x_target: u32,
+        x_actual: u32,
+        v_internal: i32,
+        v_target: i32,
+        a_actual: i32,
+        ustep: u32,
+        step: u8,
+        dir: u8,
+        pulse_acc: u16,
+    }
+
+    /// Mirror of `tmc429_model::ChainProbe`.
+    #[derive(Clone, Copy, Debug, Default)]
+    struct RtlChainProbe {
+        state: u8,
+        cell: u8,
+        motor: u8,
+        bit_count: u8,
+        pending: u8,
+        cover_waiting: u8,
+        readback: u64,
+    }
+
+    /// Mirror of `tmc429_model::Probes`.
+    #[derive(Clone, Copy, Debug, Default)]
+    struct RtlProbes {
+        m0: RtlMotorProbe,
+        m1: RtlMotorProbe,
+        m2: RtlMotorProbe,
+        chain: RtlChainProbe,
+        prescaler: u32,
+        power_down: u8,
+        status: u8,
+    }
+
+    unsafe extern "C++" {
+        include!("tmc429-testbench/cpp/rtl_bridge.h");
+
+        type RtlSim;
+
+        fn new_rtl(variant: u32) -> UniquePtr<RtlSim>;
+        fn tick(self: Pin<&mut RtlSim>, inp: &RtlInputs, out: &mut RtlOutputs, probes: &mut RtlProbes);
+        fn peek(self: &RtlSim, out: &mut RtlOutputs, probes: &mut RtlProbes);
+        fn trace_open(self: Pin<&mut RtlSim>, path: &str, period_ps: u64) -> bool;
+        fn trace_close(self: Pin<&mut RtlSim>);
+        fn cycle(self: &RtlSim) -> u64;
+    }
+}
+
+/// Which Verilated model: one per chip variant, plus the planted-bug build.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Variant {
+    /// The RTL with `CHIP` set for this chip.
+    Chip(Chip),
+    /// TMC429 built with `PLANT_BUG_STATUS`: the CDGW status bit ignores the
+    /// datagram-waiting flag. Exists to prove that the harness catches a one-bit bug.
+    PlantedStatusBug,
+}
+
+impl Variant {
+    pub fn chip(self) -> Chip {
+        match self {
+            Variant::Chip(c) => c,
+            Variant::PlantedStatusBug => Chip::Tmc429,
+        }
+    }
+    fn code(self) -> u32 {
+        match self {
+            Variant::Chip(c) => c.rtl_param(),
+            Variant::PlantedStatusBug => 3,
+        }
+    }
+}
+
+impl fmt::Display for Variant {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Variant::Chip(c) => write!(f, "{c}"),
+            Variant::PlantedStatusBug => f.write_str("tmc429+PLANT_BUG_STATUS"),
+        }
+    }
+}
+
+/// A Verilated `tmc429_top`, in the reset state after construction.
+pub struct Rtl {
+    sim: cxx::UniquePtr<ffi::RtlSim>,
+    variant: Variant,
+    inp: ffi::RtlInputs,
+    out: ffi::RtlOutputs,
+    probes: ffi::RtlProbes,
+}
+
+impl Rtl {
+    pub fn new(variant: Variant) -> Rtl {
+        let sim = ffi::new_rtl(variant.code());
+        assert!(!sim.is_null(), "every Variant has a Verilated model");
+        let mut rtl = Rtl {
+            sim,
+            variant,
+            inp: ffi::RtlInputs::default(),
+            out: ffi::RtlOutputs::default(),
+            probes: ffi::RtlProbes::default(),
+        };
+        rtl.sim.peek(&mut rtl.out, &mut rtl.probes);
+        rtl
+    }
+
+    pub fn variant(&self) -> Variant {
+        self.variant
+    }
+
+    /// One rising CLK edge.
+    #[inline]
+    pub fn tick(&mut self, i: &Inputs) -> Outputs {
+        self.inp = ffi::RtlInputs {
+            nscs_c: i.nscs_c,
+            sck_c: i.sck_c,
+            sdi_c: i.sdi_c,
+            sdi_s: i.sdi_s,
+            ref1: i.ref1,
+            ref2: i.ref2,
+            ref3: i.ref3,
+            refr1: i.refr1,
+            refr2: i.refr2,
+            refr3: i.refr3,
+        };
+        self.sim.pin_mut().tick(&self.inp, &mut self.out, &mut self.probes);
+        self.outputs()
+    }
+
+    /// Number of ticks since reset.
+    pub fn cycle(&self) -> u64 {
+        self.sim.cycle()
+    }
+
+    /// Output pins after the last tick.
+    #[inline]
+    pub fn outputs(&self) -> Outputs {
+        let o = &self.out;
+        Outputs {
+            nint_sdo_c: o.nint_sdo_c,
+            sdoz_c: o.sdoz_c,
+            sdoz_c_oe: o.sdoz_c_oe,
+            nscs_s: o.nscs_s,
+            sck_s: o.sck_s,
+            sdo_s: o.sdo_s,
+            sdi_s_o: o.sdi_s_o,
+            sdi_s_oe: o.sdi_s_oe,
+            nscs2: o.nscs2,
+            nscs3: o.nscs3,
+            poscmp: o.poscmp,
+        }
+    }
+
+    /// Probe bundle after the last tick.
+    #[inline]
+    pub fn probes(&self) -> Probes {
+        let p = &self.probes;
+        let m = |x: &ffi::RtlMotorProbe| MotorProbe {
+            x_target: x.x_target,
+            x_actual: x.x_actual,
+            v_internal: x.v_internal,
+            v_target: x.v_target,
+            a_actual: x.a_actual,
+            ustep: x.ustep,
+            step: x.step,
+            dir: x.dir,
+            pulse_acc: x.pulse_acc,
+        };
+        Probes {
+            motor: [m(&p.m0), m(&p.m1), m(&p.m2)],
+            chain: ChainProbe {
+                state: p.chain.state,
+                cell: p.chain.cell,
+                motor: p.chain.motor,
+                bit_count: p.chain.bit_count,
+                pending: p.chain.pending,
+                cover_waiting: p.chain.cover_waiting,
+                readback: p.chain.readback,
+            },
+            prescaler: p.prescaler,
+            power_down: p.power_down,
+            status: p.status,
+        }
+    }
+
+    /// Starts Verilator's VCD trace of every RTL signal from the next tick on.
+    pub fn trace_open(&mut self, path: &Path, fclk_hz: u64) -> Result<(), String> {
+        let s = path.to_str().ok_or_else(|| format!("{}: path is not UTF-8", path.display()))?;
+        let period = period_ps(fclk_hz);
+        if self.sim.pin_mut().trace_open(s, period) {
+            Ok(())
+        } else {
+            Err(format!("{}: cannot open for writing", path.display()))
+        }
+    }
+
+    pub fn trace_close(&mut self) {
+        self.sim.pin_mut().trace_close();
+    }
+}
+
+/// One CLK period in picoseconds (the VCD time unit).
+pub fn period_ps(fclk_hz: u64) -> u64 {
+    (1_000_000_000_000u64 / fclk_hz.max(1)).max(2)
+}
