@@ -92,3 +92,22 @@ fn regmap_c_and_json() {
     assert!(j.contains("{\"name\":\"v_max\",\"lsb\":0,\"width\":11,\"signed\":false,\"access\":\"RW\""));
     assert!(j.trim_start().starts_with('[') && j.trim_end().ends_with(']'));
 }
+
+/// `--events`: continuous-update datagrams of the TMC429's power-on chain configuration
+/// ($87F87F87F, spec-digest §5.2) and INT changes, in cycle order between the frame lines.
+#[test]
+fn events_in_cycle_order() {
+    let script = "0x7E010F02\nwait 25000\n0x16000100\n0x00000005\n0x00000000\n0x16000101\n";
+    let o = tmc429(&["spi", "--events", "--timestamps"], script);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(&lines[..3], ["260 15000000", "chain 12511 36 87F87F87F", "chain 23423 36 87F87F87F"], "{out}");
+    // POS_END unmasked, x_target away and back: INT rises after the frame that returns, and falls
+    // after the frame that clears the flag.
+    let int_lines: Vec<&str> = lines.iter().copied().filter(|l| l.starts_with("int ")).collect();
+    assert_eq!(int_lines.len(), 2, "{out}");
+    assert!(int_lines[0].ends_with(" 1") && int_lines[1].ends_with(" 0"), "{out}");
+    let cycles: Vec<u64> = lines.iter().map(|l| l.split_whitespace().nth(if l.starts_with(char::is_numeric) { 0 } else { 1 }).unwrap().parse().unwrap()).collect();
+    assert!(cycles.windows(2).all(|w| w[0] <= w[1]), "cycle order: {out}");
+}
