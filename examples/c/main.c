@@ -140,13 +140,22 @@ int main(void)
         char line[64];
         int i, n, rises = 0, falls = 0;
         uint64_t cyc;
-        n = tmc429_events_drain(chip, ev, 64);
-        for (i = 0; i < n; i++) {
-            if (tmc429_event_format(&ev[i], line, sizeof line) > 0 && ev[i].kind == TMC429_EVENT_INT)
-                printf("  %s\n", line);
-            if (ev[i].kind == TMC429_EVENT_INT)
+        long chain = 0;
+        /* The queue also holds every driver-chain datagram of the moves: drain it all. */
+        while ((n = tmc429_events_drain(chip, ev, 64)) > 0) {
+            for (i = 0; i < n; i++) {
+                if (ev[i].kind == TMC429_EVENT_CHAIN)
+                    chain++;
+                if (ev[i].kind != TMC429_EVENT_INT)
+                    continue;
+                if (tmc429_event_format(&ev[i], line, sizeof line) > 0)
+                    printf("  %s\n", line);
                 ev[i].level ? rises++ : falls++;
+            }
         }
+        CHECK_EQ("no error draining", n, 0);
+        printf("  %ld driver-chain datagrams\n", chain);
+        CHECK_EQ("the moves reached the driver chain", chain > 0, 1);
         CHECK_EQ("INT rises", rises, 1);
         CHECK_EQ("INT falls", falls, 1);
         tmc429_get_cycle(chip, &cyc);
