@@ -41,6 +41,16 @@ pub struct Server {
     pub pty_path: Option<String>,
 }
 
+/// Feeds the bytes a client sent (possibly none) to its link and returns the bytes to send back:
+/// replies to complete frames and whatever the link emits on its own (timeouts, events).
+fn exchange(sh: &Arc<Mutex<Shared>>, link: &mut Link, bytes: &[u8]) -> Vec<u8> {
+    let mut g = lock(sh);
+    let now = g.wall_ms();
+    let mut out = if bytes.is_empty() { Vec::new() } else { link.feed(&mut g.module, bytes, now) };
+    out.extend(link.poll(&mut g.module, now));
+    out
+}
+
 fn lock(s: &Arc<Mutex<Shared>>) -> MutexGuard<'_, Shared> {
     // A panic in another thread must not take the module down with it.
     s.lock().unwrap_or_else(|e| e.into_inner())
@@ -169,13 +179,7 @@ fn tcp_client(mut s: TcpStream, sh: Arc<Mutex<Shared>>, stop: Arc<AtomicBool>, f
             Err(e) if e.kind() == std::io::ErrorKind::Interrupted => 0,
             Err(_) => return,
         };
-        let out = {
-            let mut g = lock(&sh);
-            let now = g.wall_ms();
-            let mut out = if n > 0 { link.feed(&mut g.module, &buf[..n], now) } else { Vec::new() };
-            out.extend(link.poll(&mut g.module, now));
-            out
-        };
+        let out = exchange(&sh, &mut link, &buf[..n]);
         if !out.is_empty() && s.write_all(&out).is_err() {
             return;
         }
@@ -240,13 +244,7 @@ fn pty_loop(mut pty: Pty, sh: Arc<Mutex<Shared>>, stop: Arc<AtomicBool>, ft: u64
             Ok(n) => n,
             Err(_) => 0,
         };
-        let out = {
-            let mut g = lock(&sh);
-            let now = g.wall_ms();
-            let mut out = if n > 0 { link.feed(&mut g.module, &buf[..n], now) } else { Vec::new() };
-            out.extend(link.poll(&mut g.module, now));
-            out
-        };
+        let out = exchange(&sh, &mut link, &buf[..n]);
         pending.extend(out);
         if !pending.is_empty() {
             match pty.master.write(&pending) {

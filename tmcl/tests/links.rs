@@ -1,24 +1,18 @@
 //! ASCII interface (manual §4.4), binary framing with timeouts, reference search, EEPROM
 //! persistence, and the server under garbage and flooding.
 
+mod common;
+use common::*;
+
 use std::io::{Read, Write};
 use std::time::Duration;
 use tmcl::chip::ModelChip;
 use tmcl::link::{Link, Mode};
-use tmcl::proto::{checksum, op, Instruction};
+use tmcl::proto::{op, Instruction};
 use tmcl::server::{Options, Server};
 use tmcl::{Module, Response};
 
-fn module() -> Module<ModelChip> {
-    Module::new(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000))
-}
 
-fn frame(b8: [u8; 8]) -> [u8; 9] {
-    let mut f = [0u8; 9];
-    f[..8].copy_from_slice(&b8);
-    f[8] = checksum(&b8);
-    f
-}
 
 fn direct(m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32) -> (u8, i32) {
     match m.handle_instruction(&Instruction::new(o, t, mo, v)) {

@@ -1,21 +1,15 @@
 //! The firmware manual's examples, byte for byte, and every status code (manual §4, §5.7).
 
+mod common;
+use common::*;
+
 use std::path::Path;
 use tmcl::asm;
 use tmcl::chip::ModelChip;
 use tmcl::proto::{checksum, op, Command, Instruction, Reply, Status};
 use tmcl::{Module, Response};
 
-fn module() -> Module<ModelChip> {
-    Module::new(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000))
-}
 
-fn frame(b8: [u8; 8]) -> [u8; 9] {
-    let mut f = [0u8; 9];
-    f[..8].copy_from_slice(&b8);
-    f[8] = checksum(&b8);
-    f
-}
 
 fn send(m: &mut Module<ModelChip>, b8: [u8; 8]) -> Vec<u8> {
     m.handle_bytes(&frame(b8)).to_bytes()

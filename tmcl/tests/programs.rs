@@ -1,6 +1,9 @@
 //! The manual's example programs (§5.6.5, §5.7.20, §11.2, §11.3, §11.4, §11.6): they assemble,
 //! survive a disassembly round trip, and run on the module.
 
+mod common;
+use common::*;
+
 use std::path::Path;
 use tmcl::asm;
 use tmcl::chip::ModelChip;
@@ -8,9 +11,6 @@ use tmcl::module::AppState;
 use tmcl::proto::{op, Instruction};
 use tmcl::{Module, Origin, Response};
 
-fn module() -> Module<ModelChip> {
-    Module::new(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000))
-}
 
 fn assemble(src: &str) -> Vec<Instruction> {
     let p = asm::assemble(Path::new("example.tmc"), src, &asm::FileSystem).unwrap_or_else(|e| panic!("{e}"));

@@ -1,10 +1,10 @@
+mod common;
+use common::*;
+
 use tmcl::chip::ModelChip;
 use tmcl::proto::{op, Instruction};
 use tmcl::{Module, Response};
 
-fn module() -> Module<ModelChip> {
-    Module::new(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000))
-}
 
 fn cmd(m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32) -> (u8, i32) {
     match m.handle_instruction(&Instruction::new(o, t, mo, v)) {
