@@ -12,7 +12,8 @@ use plotters::style::FontStyle;
 
 use crate::run::Report;
 
-const FONT: &str = "tmc429-plot";
+/// Registered under the generic family name, which SVG viewers also understand.
+const FONT: &str = "monospace";
 const COLORS: [RGBColor; 3] = [RGBColor(0x1f, 0x77, 0xb4), RGBColor(0xd6, 0x27, 0x28), RGBColor(0x2c, 0xa0, 0x2c)];
 
 /// Axis titles of the three panels, as they appear in the file.

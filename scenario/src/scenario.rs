@@ -809,6 +809,12 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
                                     continue;
                                 }
                             }
+                            // the read frame must end before the scenario does
+                            let frame = 64 * sck_half as u64 + 16;
+                            if duration > 0 && when + frame > duration {
+                                c.err(atv.span().start, format!("register read at {} ends after the scenario (duration {}): a read takes {frame} CLK", tname(&c, when), tname(&c, duration)));
+                                continue;
+                            }
                             let a7 = reg.a7(motor.unwrap_or(0));
                             let who = match (motor, field) {
                                 (Some(m), Some(f)) => format!("motor {m} {} = {x}", f.name),
@@ -825,9 +831,9 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
                 }
             }
             let k = checks.len();
-            for (i, (check, auto)) in checks.into_iter().enumerate() {
+            for (check, auto) in checks {
                 let name = match &given_name {
-                    Some(n) if k > 1 => format!("{n} [{}]", i + 1),
+                    Some(n) if k > 1 => format!("{n}: {auto}"),
                     Some(n) => n.clone(),
                     None => auto,
                 };
