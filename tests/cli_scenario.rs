@@ -259,10 +259,9 @@ fn demo_on_the_model() {
     assert_eq!(n, 3, "REF3: initial 0, closes, opens");
 }
 
-/// Whether the RTL's motion core and driver chain are on this branch: then the demo
-/// co-simulates with 0 mismatches, and the README's first command runs it so
-/// (tests/docs_commands.rs). Flip together with removing the `#[ignore]` below.
-pub const DEMO_COSIM_READY: bool = false;
+#[path = "support/demo_cosim.rs"]
+mod demo_cosim;
+use demo_cosim::DEMO_COSIM_READY;
 
 /// The README's main command as it will run: the demo co-simulated, 0 mismatches.
 #[test]
