@@ -319,6 +319,7 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
     let mut step_pulses = [0u64; 3];
     let mut samples = Vec::new();
     let every = (sc.duration / opt.samples.max(1) as u64).max(1);
+    let mut next_sample = every;
     let mut mismatch: Option<String> = None;
 
     let tmp_vcd = opt.vcd.as_ref().map(|p| tmp_path(p));
@@ -530,7 +531,8 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
             }
         }
         after_edge(cycles, &mp, &mo, &mut queue, &mut drv, &mut shadow, &mut results);
-        if cycles % every == 0 || cycles == sc.duration {
+        if cycles == next_sample || cycles == sc.duration {
+            next_sample += every;
             samples.push(sample(sc, &shadow, &mp, cycles));
         }
         if cycles & 0xFFFF == 0 {
