@@ -171,27 +171,27 @@ fn chip_hold() -> B {
 fn reference_search() -> B {
     let mut b = B::default();
     // motor 0: VELOCITY_MODE toward the left switch, hard stop; then zero and move off
-    b.m(0, 2, 1).m(0, 3, 400).p_of(0, 100, 2, 0, 0.05).m(0, 13, 0);
+    b.m(0, 2, 20).m(0, 3, 400).p_of(0, 1000, 2, 0, 0.05).m(0, 13, 0);
     b.m(0, 11, 0x0800); // STOP interrupt
     b.m(0, IDX_RM, 2).m(0, 4, (-300i32) as u32 & 0xFFF);
     b.wait(6000).pin(Pin::Ref1, true).wait(400).r(regmap::motor_a7(0, 1)).status8();
     // zero the position at the switch, leave it in RAMP_MODE
     b.m(0, IDX_RM, 0).m(0, 1, 0).m(0, 0, 0).m(0, 11, 0x08FF);
-    b.m(0, 0, 40).wait(2000).pin(Pin::Ref1, false).wait(8000).r(regmap::motor_a7(0, 1));
+    b.m(0, 0, 40).wait(2000).pin(Pin::Ref1, false).wait(24_000).r(regmap::motor_a7(0, 1));
     b
 }
 
 fn ramp_modes() -> B {
     let mut b = B::default();
-    // motor 0 RAMP_MODE, motor 1 SOFT_MODE, motor 2 VELOCITY_MODE; ramp_div 3, pulse_div 0
+    // motor 0 RAMP_MODE, motor 1 SOFT_MODE, motor 2 VELOCITY_MODE; ramp_div 2, pulse_div 0
     for m in 0..3 {
-        b.m(m, 2, 2).m(m, 3, 600).p_of(m, 300, 3, 0, 0.05);
+        b.m(m, 2, 20).m(m, 3, 600).p_of(m, 2000, 2, 0, 0.05);
     }
     b.m(1, IDX_RM, 1).m(2, IDX_RM, 2);
     b.m(0, 0, 300).m(1, 0, (-200i32) as u32).m(2, 4, 500);
-    b.wait(30_000).m(2, 4, (-250i32) as u32 & 0xFFF);
-    b.wait(30_000).m(2, 4, 0).m(0, 0, 100);
-    b.wait(20_000);
+    b.wait(45_000).m(2, 4, (-250i32) as u32 & 0xFFF);
+    b.wait(20_000).m(2, 4, 0).m(0, 0, 100);
+    b.wait(35_000);
     // HOLD_MODE: V only by a v_actual write
     b.m(2, IDX_RM, HOLD).m(2, 5, 200).wait(4_000).m(2, 5, 0).wait(1_000);
     b
@@ -199,26 +199,33 @@ fn ramp_modes() -> B {
 
 fn ramp_boundary() -> B {
     let mut b = B::default();
-    // motor 0: VELOCITY_MODE at the limits, then -2048 (acts as -2047), then a_max 0 freezes V
+    // motor 0: VELOCITY_MODE at the limits (a_max 2047 = 8 units of v per ramp tick), then
+    // v_target -2048 (acts as -2047), then a_max 0 freezes V where it is
     b.m(0, 3, 2047).m(0, 6, 2047).m(0, 12, 0).m(0, IDX_RM, 2).m(0, 4, 2047);
-    b.wait(3_000).m(0, 4, 0x800).wait(3_000).m(0, 6, 0).m(0, 4, 0).wait(2_000);
-    // motor 1: RAMP_MODE with v_min > v_max (the clamp yields v_max), short move
-    b.m(1, 2, 100).m(1, 3, 50).p_of(1, 64, 1, 0, 0.05).m(1, 0, 30);
-    // motor 2: RAMP_MODE across the 24-bit signed boundary, pmul 127 / pdiv 15 kept
-    b.m(2, 1, 0x7F_FFF0).m(2, 2, 1).m(2, 3, 300).p_of(2, 200, 2, 0, 0.05).m(2, 0, 0x80_0010);
-    b.wait(12_000).m(2, 9, 0x7F0F).m(2, 0, 0x7F_FFF0).wait(6_000);
+    b.wait(9_000).m(0, 4, 0x800).wait(18_000).m(0, 6, 0).m(0, 4, 0).wait(3_000);
+    // motor 1: RAMP_MODE with v_min > v_max (the clamp yields v_max), a short move
+    b.m(1, 2, 100).m(1, 3, 50).p_of(1, 64, 1, 0, 0.05).m(1, 0, 12);
+    // motor 2: RAMP_MODE across the 24-bit signed boundary 2^23 - 1 → -2^23
+    b.m(2, 1, 0x7F_FFF0).m(2, 2, 1).m(2, 3, 600).p_of(2, 2000, 2, 0, 0.05).m(2, 0, 0x80_0010);
+    b.wait(18_000);
+    // pmul 127 / pdiv 15 (kept, C22): the target law at its smallest p, v_min carries the move
+    b.m(2, 2, 40).m(2, 9, 0x7F0F).m(2, 0, 0x7F_FFF8).wait(40_000);
     b
 }
 
 fn ramp_p_examples() -> B {
     let mut b = B::default();
-    // digest §5.5: a_max 1000 rd 3 pd 3 → p_mul 237 pdiv 2; 2047/0/0 → 243/1; 10/3/3 → 151/8
-    b.m(0, 3, 1000).p_of(0, 1000, 3, 3, 0.05).m(0, 0, 200);
-    b.m(1, 3, 2047).p_of(1, 2047, 0, 0, 0.05).m(1, 0, 1500);
-    b.m(2, 3, 100).p_of(2, 10, 3, 3, 0.05).m(2, 0, 12);
-    b.wait(120_000);
+    // digest §5.5: a_max 1000 rd 3 pd 3, 5 % → p_mul 237 pdiv 2; 2047/0/0, 5 % → 243/1;
+    // 128/0/0, 0 % → 128/4 (p = 1). v_min > 0: the √-law aims one step short (C50) and v_min
+    // carries the last step (C52).
+    b.m(0, 2, 50).m(0, 3, 1000).p_of(0, 1000, 3, 3, 0.05).m(0, 0, 60);
+    b.m(1, 2, 1).m(1, 3, 2047).p_of(1, 2047, 0, 0, 0.05).m(1, 0, 400);
+    b.m(2, 2, 10).m(2, 3, 200).p_of(2, 128, 0, 0, 0.0).m(2, 0, 150);
+    b.wait(PEX_WAIT);
     b
 }
+
+const PEX_WAIT: u64 = 100_000;
 
 fn chain_datasheet() -> B {
     let mut b = B::default();
