@@ -9,6 +9,7 @@
 //! - [`cosim`]: the lock-step run and its report;
 //! - [`vectors`]: test vectors from the golden model (docs/vectors.md).
 pub mod cosim;
+mod motion_stim;
 pub mod coverage;
 pub mod rtl;
 pub mod signals;
