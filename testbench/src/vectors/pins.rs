@@ -7,6 +7,7 @@
 //!   the top with zeros), so a truncated line is detected, not replayed;
 //! - `_check` (4 bits plus up to 3 zero pad bits that round the word up to whole hex digits):
 //!   the XOR of all hex digits of the line is 0, so a changed or shifted digit is detected.
+//!
 //! Columns whose name begins with `_` are framing, not ports.
 
 use std::fmt::Write as _;
@@ -78,7 +79,7 @@ impl Layout {
     pub fn mask_hex(&self) -> String {
         let mut bits = Vec::new();
         for c in self.ports.iter().filter(|c| c.dir == Dir::Out) {
-            bits.extend(std::iter::repeat(c.compared).take(c.width as usize));
+            bits.resize(bits.len() + c.width as usize, c.compared);
         }
         bits_to_hex(&bits)
     }
@@ -115,7 +116,9 @@ fn bits_to_hex(bits: &[bool]) -> String {
     let mut s = String::new();
     let mut nib = 0u8;
     let mut n = 0;
-    for b in std::iter::repeat(false).take(pad).chain(bits.iter().copied()) {
+    let mut all = vec![false; pad];
+    all.extend_from_slice(bits);
+    for b in all {
         nib = nib << 1 | b as u8;
         n += 1;
         if n == 4 {
