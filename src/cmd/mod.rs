@@ -7,3 +7,4 @@ pub mod regmap;
 pub mod run;
 pub mod spi;
 pub mod tmcl;
+pub mod vectors;
