@@ -38,6 +38,8 @@ pub struct Args {
 }
 
 pub fn run(a: Args) -> Result<Outcome, UserError> {
+    tmc429_testbench::rtl::require("or run a scenario on the golden model alone: tmc429 run FILE --engine model")
+        .map_err(UserError)?;
     let chip = a.chip.chip;
     let mut cfg = Config::new(chip, a.seed, a.cycles);
     cfg.fclk = a.chip.fclk();

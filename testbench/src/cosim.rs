@@ -201,7 +201,7 @@ fn rtl_trace_path(vcd: &Path) -> PathBuf {
 fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, String> {
     let chip = cfg.variant.chip();
     let mut model = Tmc429::new(chip);
-    let mut rtl = Rtl::new(cfg.variant);
+    let mut rtl = Rtl::try_new(cfg.variant)?;
     let mut stim = Stimulus::new(chip, cfg.profile, cfg.seed);
     let mut drv = Driver::default();
     let mut cov = Coverage::new(chip, cfg.profile);

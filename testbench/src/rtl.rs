@@ -1,10 +1,35 @@
 //! The Verilated RTL (rtl/tmc429_top.v) behind a cxx bridge: one FFI call per CLK cycle.
+//!
+//! A build without Verilator (testbench/build.rs sets the cfg `tmc429_no_rtl`) has no bridge:
+//! [`AVAILABLE`] is false, [`Rtl::try_new`] returns [`MISSING`], and an [`Rtl`] cannot exist.
 
 use std::fmt;
 use std::path::Path;
 
-use tmc429_model::{ChainProbe, Chip, Inputs, MotorProbe, Outputs, Probes};
+#[cfg(not(tmc429_no_rtl))]
+use tmc429_model::{ChainProbe, MotorProbe};
+use tmc429_model::{Chip, Inputs, Outputs, Probes};
 
+/// Whether this build has the Verilated RTL (Verilator was found at build time).
+pub const AVAILABLE: bool = !cfg!(tmc429_no_rtl);
+
+/// Why the RTL is missing and what to do: the start of the error of every command that needs
+/// it (the commands add their own alternative, such as `--engine model`).
+pub const MISSING: &str = "Verilator not found: install it with scripts/setup (Debian: apt-get install verilator)";
+
+/// `Ok` when the RTL is built in, else [`MISSING`] with `alternative` (e.g. "or use
+/// --engine model") appended after a comma.
+pub fn require(alternative: &str) -> Result<(), String> {
+    if AVAILABLE {
+        Ok(())
+    } else if alternative.is_empty() {
+        Err(MISSING.to_string())
+    } else {
+        Err(format!("{MISSING}, {alternative}"))
+    }
+}
+
+#[cfg(not(tmc429_no_rtl))]
 #[cxx::bridge(namespace = "tmc429tb")]
 mod ffi {
     /// Mirror of `tmc429_model::Inputs`.
@@ -107,6 +132,7 @@ impl Variant {
             Variant::PlantedStatusBug => Chip::Tmc429,
         }
     }
+    #[cfg_attr(tmc429_no_rtl, allow(dead_code))]
     fn code(self) -> u32 {
         match self {
             Variant::Chip(c) => c.rtl_param(),
@@ -125,6 +151,7 @@ impl fmt::Display for Variant {
 }
 
 /// A Verilated `tmc429_top`, in the reset state after construction.
+#[cfg(not(tmc429_no_rtl))]
 pub struct Rtl {
     sim: cxx::UniquePtr<ffi::RtlSim>,
     variant: Variant,
@@ -133,7 +160,13 @@ pub struct Rtl {
     probes: ffi::RtlProbes,
 }
 
+#[cfg(not(tmc429_no_rtl))]
 impl Rtl {
+    /// The model of `variant`, or [`MISSING`] in a build without Verilator.
+    pub fn try_new(variant: Variant) -> Result<Rtl, String> {
+        Ok(Rtl::new(variant))
+    }
+
     pub fn new(variant: Variant) -> Rtl {
         let sim = ffi::new_rtl(variant.code());
         assert!(!sim.is_null(), "every Variant has a Verilated model");
@@ -240,6 +273,53 @@ impl Rtl {
 
     pub fn trace_close(&mut self) {
         self.sim.pin_mut().trace_close();
+    }
+}
+
+/// Without Verilator: no value of this type exists (its field is uninhabited), so every method
+/// is unreachable; [`Rtl::try_new`] returns [`MISSING`].
+#[cfg(tmc429_no_rtl)]
+pub struct Rtl {
+    never: std::convert::Infallible,
+}
+
+#[cfg(tmc429_no_rtl)]
+impl Rtl {
+    pub fn try_new(_variant: Variant) -> Result<Rtl, String> {
+        Err(MISSING.to_string())
+    }
+
+    /// Panics: callers that can report an error use [`Rtl::try_new`].
+    pub fn new(_variant: Variant) -> Rtl {
+        panic!("{MISSING}")
+    }
+
+    pub fn variant(&self) -> Variant {
+        match self.never {}
+    }
+
+    pub fn tick(&mut self, _i: &Inputs) -> Outputs {
+        match self.never {}
+    }
+
+    pub fn cycle(&self) -> u64 {
+        match self.never {}
+    }
+
+    pub fn outputs(&self) -> Outputs {
+        match self.never {}
+    }
+
+    pub fn probes(&self) -> Probes {
+        match self.never {}
+    }
+
+    pub fn trace_open(&mut self, _path: &Path, _fclk_hz: u64) -> Result<(), String> {
+        match self.never {}
+    }
+
+    pub fn trace_close(&mut self) {
+        match self.never {}
     }
 }
 

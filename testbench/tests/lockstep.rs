@@ -2,6 +2,7 @@
 //! every coverage bin of the blocks built so far is hit (10 M CLK cycles per variant, seed 1,
 //! as `tmc429 cosim --chip X --seed 1 --cycles 10000000`).
 //! `TMC429_COSIM_CYCLES` overrides the length (the coverage check needs the full run).
+#![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use tmc429_model::Chip;
 use tmc429_testbench::{run, Config};

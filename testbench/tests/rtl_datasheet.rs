@@ -1,5 +1,6 @@
 //! The Verilated RTL alone against the datasheet's SPI examples ([428] §6.5 with erratum E1,
 //! [4210] §5.2.3 with erratum E2) and the contract's power-on values (C2, C29, C30).
+#![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use tmc429_model::{Chip, Outputs};
 use tmc429_testbench::stimulus::{Driver, Event, Frame, Txn};

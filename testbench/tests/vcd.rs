@@ -1,4 +1,5 @@
 //! The co-simulation VCDs read back with wellen: scopes, signals and exact values.
+#![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use std::path::PathBuf;
 
