@@ -218,7 +218,26 @@ fn gtkw_signals(path: &Path) -> (String, Vec<String>) {
     (dump, sigs)
 }
 
-fn check_demo_outputs(dir: &Path, cosim: bool) {
+/// The vector files the demo writes (docs/vectors.md), in the order its summary lists them.
+const DEMO_VECTORS: [&str; 6] = [
+    "chip-demo-tmc429.hex",
+    "chip-demo-tmc429.cols",
+    "chip-demo-tmc429.meta",
+    "spi-demo-tmc429.csv",
+    "ramp-demo-tmc429.csv",
+    "chain-demo-tmc429.csv",
+];
+
+fn check_demo_outputs(dir: &Path, cosim: bool, stdout: &str) {
+    let listed: Vec<&str> = stdout.lines().filter_map(|l| l.strip_prefix("vectors: ")).collect();
+    let want: Vec<String> = DEMO_VECTORS.iter().map(|f| dir.join(f).display().to_string()).collect();
+    assert_eq!(listed, want, "the summary lists the vector files");
+    for f in DEMO_VECTORS {
+        assert!(dir.join(f).metadata().unwrap().len() > 200, "{f}");
+    }
+    // 60 ms at 32 MHz and the reset line
+    let meta = std::fs::read_to_string(dir.join("chip-demo-tmc429.meta")).unwrap();
+    assert!(meta.contains("\ncycles 1920001\n") && meta.contains("\nscenario demo\n"), "{meta}");
     let vcd = dir.join("demo.vcd");
     let vars = vcd_vars(&vcd);
     let (dump, sigs) = gtkw_signals(&dir.join("demo.gtkw"));
@@ -248,7 +267,17 @@ fn demo_on_the_model() {
     assert!(out.starts_with(want), "{out}");
     assert!(out.contains("expectations: 5 of 5 passed\n"), "{out}");
     assert!(out.contains("motor 2 latched the switch position: motor 2 x_latched = -300 (read) at 25 ms\n"), "{out}");
-    check_demo_outputs(&d, false);
+    check_demo_outputs(&d, false, &out);
+    // the vectors: the last ramp tick of each motor (cycle, motor, mode, x_target, x_actual,
+    // v_internal …) at rest on its target, and one CSV row per driver-chain datagram counted
+    let ramp = std::fs::read_to_string(d.join("ramp-demo-tmc429.csv")).unwrap();
+    for (m, want) in [(0, "1919999,0,RAMP,-300,-300,0,0,0,0,0"), (1, "1919999,1,SOFT,600,600,0,0,0,0,0"), (2, "1919999,2,RAMP,300,300,0,0,0,0,0")] {
+        let last = ramp.lines().filter(|l| l.split(',').nth(1) == Some(&m.to_string())).last().unwrap();
+        assert_eq!(last, want);
+    }
+    let chain = std::fs::read_to_string(d.join("chain-demo-tmc429.csv")).unwrap();
+    assert!(out.contains("datagrams:    1138 (driver chain)\n"), "{out}");
+    assert_eq!(chain.lines().count(), 1 + 1138);
     // the model-side VCD: motor 2's latch is armed and REF3 closes at the latched position
     let mut w = wellen::simple::read(d.join("demo.vcd")).unwrap();
     let h = w.hierarchy();
@@ -274,7 +303,7 @@ fn demo_cosim_has_no_mismatch() {
     assert!(out.contains("engine cosim"), "{out}");
     assert!(out.contains("mismatches:   0\n"), "{out}");
     assert!(out.contains("expectations: 5 of 5 passed\n"), "{out}");
-    check_demo_outputs(&d, true);
+    check_demo_outputs(&d, true, &out);
 }
 
 /// Until then the co-simulated demo runs mechanically: it stops at the first mismatch with
@@ -291,7 +320,7 @@ fn demo_cosim_runs_and_reports() {
     assert!(out.contains("mismatches:   1\nexpectations: 0 of 5 passed\n"), "{out}");
     assert!(out.contains("MISMATCH at cycle "), "{out}");
     assert!(out.contains("  motor0.v_internal "), "{out}");
-    check_demo_outputs(&d, true);
+    check_demo_outputs(&d, true, &out);
 }
 
 #[test]

@@ -327,3 +327,166 @@ fn script_file_scenario() {
     assert_eq!(rows[2][8], "status $17: xEQt3 xEQt2 RS1 xEQt1");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+fn example(name: &str) -> String {
+    root().join("examples/scenarios").join(name).to_string_lossy().into_owned()
+}
+
+/// A TOML scenario file (docs/scenarios.md) as a vector scenario: the RAMP_MODE move of
+/// examples/scenarios/ramp-move.toml ends at its x_target 1000 with velocity 0, every step
+/// counted (TMC429 §8.1.11); the µC's frames are the file's writes by name, in file order, and
+/// the two reads of its expectation at 55 ms (the frame starts on the edge after 1 760 000).
+#[test]
+fn toml_scenario_vectors() {
+    let dir = tmpdir("toml");
+    let f = example("ramp-move.toml");
+    let printed = export(&dir, &["--unit", "ramp", "--scenario", &f]);
+    assert_eq!(printed, format!("{}\n", dir.join("ramp-ramp-move-tmc429.csv").display()));
+    let rows = csv(&dir.join("ramp-ramp-move-tmc429.csv"));
+    let m0: Vec<&Vec<String>> = rows.iter().filter(|r| r[1] == "0").collect();
+    let last = m0.last().unwrap();
+    // cycle, motor, mode, x_target, x_actual, v_internal, v_actual, v_target, a_actual, steps
+    assert_eq!(last[2..9], ["RAMP", "1000", "1000", "0", "0", "0", "0"]);
+    assert!(m0.iter().all(|r| r[4].parse::<i64>().unwrap() <= 1000), "never past the target");
+    assert_eq!(m0.iter().map(|r| r[9].parse::<i64>().unwrap()).sum::<i64>(), 1000);
+    // ramp_div 5: a tick every 2^5 · 32 CLK, at phase 30 of the last frame (C40); 60 ms run
+    let c: Vec<u64> = m0.iter().rev().take(2).map(|r| r[0].parse().unwrap()).collect();
+    assert_eq!((c[0], c[0] - c[1]), (1_919_999, 1024));
+
+    export(&dir, &["--unit", "spi", "--format", "csv", "--scenario", &f]);
+    let rows = csv(&dir.join("spi-ramp-move-tmc429.csv"));
+    let got: Vec<[&str; 5]> = rows.iter().map(|r| [r[0].as_str(), r[3].as_str(), r[4].as_str(), r[5].as_str(), r[6].as_str()]).collect();
+    assert_eq!(
+        got,
+        [
+            // sck_half 4 (the scenario default): 4 + 64·4 + 4 CLK from the first edge with nSCS_C
+            // low to the first with it high, then 4 high
+            ["1", "18005500", "15000000", "write", "clk_config[0]"],
+            ["269", "04000001", "15000000", "write", "v_min[0]"],
+            ["537", "060007FF", "15000000", "write", "v_max[0]"],
+            ["805", "0C0003E8", "15000000", "write", "a_max[0]"],
+            // pmulpdiv.c, a_max 1000, ramp_div = pulse_div, 1 %: p_mul 247, p_div 2 (digest §5.5)
+            ["1073", "1200F702", "15000000", "write", "pmul_pdiv[0]"],
+            ["1341", "000003E8", "15000000", "write", "x_target[0]"],
+            ["1760001", "03000000", "150003E8", "read", "x_actual[0]"],
+            ["1760269", "0B000000", "15000000", "read", "v_actual[0]"],
+        ]
+    );
+    assert_eq!(rows[0][1], "265");
+
+    export(&dir, &["--unit", "chip", "--scenario", &f]);
+    let stem = dir.join("chip-ramp-move-tmc429");
+    for (k, v) in [("cycles", "1920001"), ("fclk", "32000000"), ("scenario", "ramp-move"), ("chip", "tmc429"), ("replay", "pending-motion-core")] {
+        assert_eq!(meta(&stem, k), v, "{k}");
+    }
+    assert_eq!(std::fs::read_to_string(stem.with_extension("hex")).unwrap().lines().count(), 1_920_001);
+
+    // the file names its chip, fclk and sck_half: an option that contradicts them is an error
+    for (opt, val, msg) in [
+        ("--chip", "tmc428", "--chip tmc428: the scenario file"),
+        ("--fclk", "16MHz", "--fclk 16000000: the scenario file"),
+        ("--sck-half", "3", "--sck-half 3: the scenario file"),
+    ] {
+        let o = tmc429().args(["vectors", "--unit", "spi", "--scenario", &f, "--out"]).arg(&dir).args([opt, val]).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{opt}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains(msg), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    // agreeing options are accepted
+    export(&dir, &["--unit", "spi", "--format", "csv", "--scenario", &f, "--chip", "tmc429", "--fclk", "32MHz", "--sck-half", "4"]);
+    // a scenario error: file, line, exit 2, no files
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "duration = \"1 ms\"\n[[write]]\nmotor = 0\nv_maks = 1\n").unwrap();
+    let o = tmc429().args(["vectors", "--unit", "chip", "--scenario"]).arg(&bad).arg("--out").arg(dir.join("bad")).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains(&format!("{}:4: unknown motor register or field 'v_maks'", bad.display())));
+    assert!(!dir.join("bad").exists());
+    let o = tmc429().args(["vectors", "--unit", "lut", "--scenario", &f, "--out"]).arg(&dir).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `tmc429 run FILE --vectors DIR`: the chip pins and the spi, ramp and chain CSV, listed; the
+/// same files as `tmc429 vectors --scenario FILE` per unit, and the golden model's whatever the
+/// engine. A scenario that only writes and reads registers replays on the RTL under Icarus
+/// Verilog with 0 failed (the RTL has the SPI slave and the register file).
+#[test]
+fn run_writes_the_vectors_of_a_scenario() {
+    let dir = tmpdir("run");
+    let sc = dir.join("regs.toml");
+    std::fs::write(
+        &sc,
+        "name = \"regs\"\n\
+         duration = \"1 ms\"\n\
+         driver = \"table-11-2\"\n\
+         lut = \"sine\"\n\
+         [[write]]\n\
+         motor = 1\n\
+         dx_ref_tolerance = 291\n\
+         x_target = -5\n\
+         x_actual = -5\n\
+         [[write]]\n\
+         pos_comp = 1234\n\
+         if_configuration = { sdo_int = 1 }\n\
+         [[event]]\n\
+         at = \"0.5 ms\"\n\
+         switch = { ref1 = true }\n\
+         [[expect]]\n\
+         at = \"0.9 ms\"\n\
+         register = { pos_comp = 1234, type_version = 0x429101 }\n",
+    )
+    .unwrap();
+    let model = dir.join("model");
+    let o = tmc429().arg("run").arg(&sc).arg("--vectors").arg(&model).output().unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", String::from_utf8_lossy(&o.stderr));
+    let names = ["chip-regs-tmc429.hex", "chip-regs-tmc429.cols", "chip-regs-tmc429.meta", "spi-regs-tmc429.csv", "ramp-regs-tmc429.csv", "chain-regs-tmc429.csv"];
+    let listed: Vec<&str> = out.lines().filter_map(|l| l.strip_prefix("vectors: ")).collect();
+    let want: Vec<String> = names.iter().map(|n| model.join(n).display().to_string()).collect();
+    assert_eq!(listed, want);
+    let mut files: Vec<String> = std::fs::read_dir(&model).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    files.sort();
+    let mut sorted = names.to_vec();
+    sorted.sort();
+    assert_eq!(files, sorted, "exactly these, no temporary files");
+    // the 18 words of Table 11-2 and LSMD, the 32 words of the sine table, the five register
+    // writes, and the two reads of the expectation
+    let spi = csv(&model.join("spi-regs-tmc429.csv"));
+    assert_eq!(spi.len(), 18 + 1 + 32 + 3 + 2 + 2, "{spi:?}");
+    assert_eq!((spi[spi.len() - 1][6].as_str(), &spi[spi.len() - 1][4][2..]), ("type_version", "429101"));
+    assert_eq!((spi[spi.len() - 2][6].as_str(), &spi[spi.len() - 2][4][2..]), ("pos_comp", "0004D2"));
+
+    // the same files from `tmc429 vectors --scenario FILE.toml`, one unit at a time
+    let one = dir.join("one");
+    for (unit, stem) in [("chip", "chip-regs-tmc429"), ("spi", "spi-regs-tmc429"), ("ramp", "ramp-regs-tmc429"), ("chain", "chain-regs-tmc429")] {
+        let fmt = if unit == "chip" { "pins" } else { "csv" };
+        export(&one, &["--unit", unit, "--format", fmt, "--scenario", sc.to_str().unwrap()]);
+        for ext in ["hex", "cols", "meta", "csv"] {
+            let a = model.join(stem).with_extension(ext);
+            if a.exists() {
+                assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(one.join(stem).with_extension(ext)).unwrap(), "{stem}.{ext}");
+            }
+        }
+    }
+    // co-simulated: the vectors are still the golden model's
+    let cosim = dir.join("cosim");
+    let o = tmc429().arg("run").arg(&sc).args(["--engine", "cosim", "--vectors"]).arg(&cosim).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stdout));
+    for n in names {
+        assert_eq!(std::fs::read(model.join(n)).unwrap(), std::fs::read(cosim.join(n)).unwrap(), "{n}");
+    }
+
+    // the chip vectors replay on the RTL: every pin it drives, every cycle
+    let stem = model.join("chip-regs-tmc429");
+    let cycles: u64 = meta(&stem, "cycles").parse().unwrap();
+    assert_eq!(cycles, 32_001);
+    let vvp = build_chip_tb(&dir, None);
+    let replayed = replay(&vvp, &stem, None);
+    assert_eq!(replayed.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{replayed:?}");
+
+    // an output directory that cannot be made: exit 2 before running
+    let o = tmc429().arg("run").arg(&sc).args(["--vectors", "/proc/nonexistent/v"]).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(o.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--vectors /proc/nonexistent/v: cannot create"));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -105,9 +105,21 @@ fn readme_first_command_writes_what_it_names() {
     let sc = script("cargo run --release -- demo\n", env!("CARGO_BIN_EXE_tmc429"));
     let o = Command::new("bash").arg("-c").arg(&sc).current_dir(&dir).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stdout));
-    for f in ["demo.vcd", "demo.gtkw", "demo.svg", "demo.png"] {
+    for f in [
+        "demo.vcd",
+        "demo.gtkw",
+        "demo.svg",
+        "demo.png",
+        "chip-demo-tmc429.hex",
+        "spi-demo-tmc429.csv",
+        "ramp-demo-tmc429.csv",
+        "chain-demo-tmc429.csv",
+    ] {
         assert!(dir.join("demo-out").join(f).is_file(), "demo-out/{f}");
         assert!(md.contains(&format!("demo-out/{f}")), "the README names demo-out/{f}");
+    }
+    for f in ["chip-demo-tmc429.cols", "chip-demo-tmc429.meta"] {
+        assert!(dir.join("demo-out").join(f).is_file(), "demo-out/{f}");
     }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -13,6 +13,7 @@ use tmc429_testbench::cosim::{Mismatch, Outcome, TxnRecord, HISTORY};
 use tmc429_testbench::rtl::{Rtl, Variant};
 use tmc429_testbench::signals::{agree, diff, flatten, Compare, SIGNALS};
 use tmc429_testbench::stimulus::{Driver, Event, Frame, Txn};
+use tmc429_testbench::vectors::scenario::PinRuns;
 
 use crate::scenario::{fmt_time, Action, Check, Condition, Scenario, Trigger, WriteData, PINS};
 use crate::units;
@@ -61,11 +62,13 @@ pub struct Options {
     pub compare: Compare,
     /// Points per motor kept for plots.
     pub samples: usize,
+    /// Keep the input pins of every cycle ([`Report::pins`]: the stimulus of test vectors).
+    pub record_pins: bool,
 }
 
 impl Options {
     pub fn new(engine: Engine) -> Options {
-        Options { engine, vcd: None, compare: Compare::all(), samples: 2000 }
+        Options { engine, vcd: None, compare: Compare::all(), samples: 2000, record_pins: false }
     }
 }
 
@@ -133,6 +136,8 @@ pub struct Report {
     pub mismatch: Option<String>,
     pub samples: Vec<Sample>,
     pub vcd: Option<PathBuf>,
+    /// The input pins of every cycle run ([`Options::record_pins`]).
+    pub pins: Option<PinRuns>,
 }
 
 impl Report {
@@ -206,10 +211,15 @@ struct Sim {
 }
 
 impl Sim {
-    fn new(chip: Chip, engine: Engine) -> Sim {
+    /// Fails with [`tmc429_testbench::rtl::MISSING`] when the engine needs the RTL and this
+    /// build has none.
+    fn new(chip: Chip, engine: Engine) -> Result<Sim, String> {
         let model = (engine != Engine::Rtl).then(|| Tmc429::new(chip));
-        let rtl = (engine != Engine::Model).then(|| Rtl::new(Variant::Chip(chip)));
-        Sim { model, rtl }
+        let rtl = match engine {
+            Engine::Model => None,
+            _ => Some(Rtl::try_new(Variant::Chip(chip)).map_err(|e| format!("{e}, or use --engine model"))?),
+        };
+        Ok(Sim { model, rtl })
     }
     fn state(&self) -> (Outputs, Probes) {
         match (&self.model, &self.rtl) {
@@ -303,7 +313,7 @@ impl Shadow {
 /// Runs a scenario. `progress(done, total)` is called every 65 536 cycles.
 pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> Result<Report, String> {
     let chip = sc.chip;
-    let mut sim = Sim::new(chip, opt.engine);
+    let mut sim = Sim::new(chip, opt.engine)?;
     let cosim = opt.engine == Engine::Cosim;
     let n_motors = if chip == Chip::Tmc4210 { 1 } else { 3 };
     let mut shadow = Shadow::new(chip);
@@ -321,6 +331,7 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
     let every = (sc.duration / opt.samples.max(1) as u64).max(1);
     let mut next_sample = every;
     let mut mismatch: Option<String> = None;
+    let mut pins = opt.record_pins.then(PinRuns::new);
 
     let tmp_vcd = opt.vcd.as_ref().map(|p| tmp_path(p));
     let mut vcd = match &tmp_vcd {
@@ -446,6 +457,9 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
             }
         }
         let (inp, ev) = drv.step();
+        if let Some(p) = pins.as_mut() {
+            p.push(inp);
+        }
         let mut ended: Option<(TxnRecord, Option<usize>)> = None;
         match ev {
             Event::Sample(_) => {
@@ -583,6 +597,7 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
         mismatch,
         samples,
         vcd: opt.vcd.clone(),
+        pins,
     })
 }
 

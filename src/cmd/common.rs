@@ -21,11 +21,11 @@ impl ChipArgs {
     }
 }
 
-fn parse_chip(s: &str) -> Result<Chip, String> {
+pub fn parse_chip(s: &str) -> Result<Chip, String> {
     s.parse()
 }
 
-fn parse_fclk(s: &str) -> Result<u64, String> {
+pub fn parse_fclk(s: &str) -> Result<u64, String> {
     let t = s.trim();
     let (num, mult) = if let Some(n) = t.strip_suffix("MHz").or_else(|| t.strip_suffix("M")) {
         (n, 1e6)

@@ -2,7 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
-use tmc429_scenario::{gtkw, plot, run as srun, Engine, Options, Report, Scenario};
+use tmc429_scenario::{gtkw, plot, run as srun, vectors as svectors, Engine, Options, Report, Scenario};
 
 use super::common::{check_output, read_input, Progress};
 use crate::{Outcome, UserError};
@@ -21,6 +21,10 @@ pub struct Args {
     /// Plot position, velocity and acceleration per motor: FILE.svg or FILE.png.
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
+    /// Write the golden model's test vectors of the scenario to DIR (created if missing): chip
+    /// pins and the CSV of SPI frames, ramp ticks and driver-chain datagrams (docs/vectors.md).
+    #[arg(long, value_name = "DIR")]
+    pub vectors: Option<PathBuf>,
 }
 
 pub fn parse_engine(s: &str) -> Result<Engine, String> {
@@ -31,13 +35,27 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
     let (name, text) = read_input(Some(&a.file))?;
     let sc = tmc429_scenario::parse(&text, &name)
         .map_err(|errs| UserError(errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n")))?;
-    let report = execute(&sc, a.engine, a.vcd.as_deref(), a.plot.as_deref(), "run")?;
+    let (report, vectors) = execute(&sc, a.engine, a.vcd.as_deref(), a.plot.as_deref(), a.vectors.as_deref(), "run")?;
     print!("{}", report.summary());
+    for f in &vectors {
+        println!("vectors: {}", f.display());
+    }
     Ok(conclude(&report))
 }
 
-/// Checks the outputs, runs, writes the plot and the save file.
-pub fn execute(sc: &Scenario, engine: Engine, vcd: Option<&Path>, plot_file: Option<&Path>, label: &str) -> Result<Report, UserError> {
+/// Checks the outputs, runs, writes the plot, the save file and the vectors (whose paths it
+/// returns).
+pub fn execute(
+    sc: &Scenario,
+    engine: Engine,
+    vcd: Option<&Path>,
+    plot_file: Option<&Path>,
+    vectors_dir: Option<&Path>,
+    label: &str,
+) -> Result<(Report, Vec<PathBuf>), UserError> {
+    if engine != Engine::Model {
+        tmc429_testbench::rtl::require("or use --engine model").map_err(UserError)?;
+    }
     if let Some(p) = plot_file {
         match p.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
             Some("svg") | Some("png") => {}
@@ -48,8 +66,14 @@ pub fn execute(sc: &Scenario, engine: Engine, vcd: Option<&Path>, plot_file: Opt
     if let Some(v) = vcd {
         check_output("--vcd", v)?;
     }
+    if let Some(d) = vectors_dir {
+        std::fs::create_dir_all(d).map_err(|e| UserError(format!("--vectors {}: cannot create: {e}", d.display())))?;
+        check_output("--vectors", &d.join("vectors"))?;
+    }
     let mut opt = Options::new(engine);
     opt.vcd = vcd.map(Path::to_path_buf);
+    // the model's own run gives the vectors' stimulus; other engines run the model again
+    opt.record_pins = vectors_dir.is_some() && engine == Engine::Model;
     let mut progress = Progress::new(&format!("{label} {} ({})", sc.name, engine.name()));
     let report = srun(sc, &opt, &mut |d, t| progress.update(d, t)).map_err(UserError)?;
     progress.finish();
@@ -64,7 +88,12 @@ pub fn execute(sc: &Scenario, engine: Engine, vcd: Option<&Path>, plot_file: Opt
     if let Some(p) = plot_file {
         plot::write(&report, p).map_err(UserError)?;
     }
-    Ok(report)
+    let mut report = report;
+    let files = match vectors_dir {
+        Some(d) => svectors::write(sc, report.pins.take(), d).map_err(UserError)?,
+        None => Vec::new(),
+    };
+    Ok((report, files))
 }
 
 /// Exit 1 with the failed expectations (and a mismatch) named on stderr.

@@ -2,9 +2,11 @@
 
 use std::path::{Path, PathBuf};
 
-use tmc429_testbench::vectors::{self, scenario, Format, Unit};
+use tmc429_model::Chip;
+use tmc429_scenario::vectors as svectors;
+use tmc429_testbench::vectors::{self, scenario, Form, Format, Unit};
 
-use super::common::ChipArgs;
+use super::common::{parse_chip, parse_fclk, read_input};
 use crate::{Outcome, UserError};
 
 #[derive(clap::Args)]
@@ -12,7 +14,8 @@ pub struct Args {
     /// Unit boundary: spi, ramp, lut, chain or chip.
     #[arg(long, value_parser = parse_unit)]
     pub unit: Unit,
-    /// A built-in scenario (see --list) or a scenario file (a `tmc429 spi` datagram script).
+    /// A built-in scenario (see --list), a scenario file FILE.toml (docs/scenarios.md; it names
+    /// its chip and fclk) or a `tmc429 spi` datagram script.
     #[arg(long, required_unless_present = "list")]
     pub scenario: Option<String>,
     /// Output directory (created if missing).
@@ -21,17 +24,23 @@ pub struct Args {
     /// pins (.hex + .cols + .meta), csv (transaction level) or all the unit has.
     #[arg(long, default_value = "all", value_parser = parse_format)]
     pub format: Format,
-    #[command(flatten)]
-    pub chip: ChipArgs,
+    /// Chip variant: tmc428, tmc429 (default) or tmc4210. A TOML scenario names its own.
+    #[arg(long, value_parser = parse_chip)]
+    pub chip: Option<Chip>,
+    /// CLK frequency in Hz (default: 16 MHz for the TMC428, 32 MHz otherwise). A TOML scenario
+    /// names its own.
+    #[arg(long, value_parser = parse_fclk)]
+    pub fclk: Option<u64>,
     /// Seed of the `random` scenario.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
     /// CLK cycles of the `random` scenario.
     #[arg(long, default_value_t = 100_000, value_parser = clap::value_parser!(u64).range(1..))]
     pub cycles: u64,
-    /// CLK cycles per SCK_C half period for a scenario file (at least 3, TMC428 Table 6-1).
-    #[arg(long, default_value_t = scenario::SCK_HALF, value_parser = clap::value_parser!(u32).range(3..))]
-    pub sck_half: u32,
+    /// CLK cycles per SCK_C half period for a datagram script (at least 3, TMC428 Table 6-1;
+    /// default 3). A TOML scenario names its own (`sck_half`).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(3..))]
+    pub sck_half: Option<u32>,
     /// List the built-in scenarios and exit.
     #[arg(long)]
     pub list: bool,
@@ -56,11 +65,15 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
         return Err(UserError("--scenario and --out are required".into()));
     };
     let forms = vectors::forms(a.unit, a.format).map_err(UserError)?;
-    let chip = a.chip.chip;
-    let fclk = a.chip.fclk();
+    if name.ends_with(".toml") {
+        return toml_scenario(&a, Path::new(name), out, &forms);
+    }
+    let chip = a.chip.unwrap_or(Chip::Tmc429);
+    let fclk = a.fclk.unwrap_or_else(|| chip.default_fclk());
+    let sck_half = a.sck_half.unwrap_or(scenario::SCK_HALF);
     let sc = match scenario::builtin(name, chip, fclk, a.seed, a.cycles) {
         Some(sc) => sc,
-        None if Path::new(name).is_file() => scenario::from_file(Path::new(name), chip, fclk, a.sck_half).map_err(UserError)?,
+        None if Path::new(name).is_file() => scenario::from_file(Path::new(name), chip, fclk, sck_half).map_err(UserError)?,
         None => {
             let names: Vec<&str> = scenario::BUILTIN.iter().map(|(n, _)| *n).collect();
             return Err(UserError(format!(
@@ -71,6 +84,35 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
     };
     std::fs::create_dir_all(out).map_err(|e| UserError(format!("--out {}: cannot create: {e}", out.display())))?;
     let files = vectors::export(a.unit, &sc, &forms, out).map_err(UserError)?;
+    for f in files {
+        println!("{}", f.display());
+    }
+    Ok(Outcome::Ok)
+}
+
+/// A TOML scenario file (docs/scenarios.md): run once on the golden model for its pins, then
+/// exported like any scenario. Its chip, fclk and sck_half are the file's; an option that
+/// contradicts them is an error.
+fn toml_scenario(a: &Args, path: &Path, out: &Path, forms: &[Form]) -> Result<Outcome, UserError> {
+    let (name, text) = read_input(Some(path))?;
+    let sc = tmc429_scenario::parse(&text, &name)
+        .map_err(|errs| UserError(errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n")))?;
+    let given = [
+        ("--chip", a.chip.map(|c| c.to_string()), sc.chip.to_string(), "chip"),
+        ("--fclk", a.fclk.map(|f| f.to_string()), sc.fclk.to_string(), "fclk"),
+        ("--sck-half", a.sck_half.map(|h| h.to_string()), sc.sck_half.to_string(), "sck_half"),
+    ];
+    for (opt, want, has, key) in given {
+        if let Some(w) = want.filter(|w| *w != has) {
+            return Err(UserError(format!(
+                "{opt} {w}: the scenario file {name} runs with {key} {has}; change it in the file or leave {opt} out"
+            )));
+        }
+    }
+    svectors::unit_ok(a.unit).map_err(UserError)?;
+    std::fs::create_dir_all(out).map_err(|e| UserError(format!("--out {}: cannot create: {e}", out.display())))?;
+    let v = svectors::record(&sc).map_err(UserError)?;
+    let files = vectors::export_units(&v, &[(a.unit, forms.to_vec())], out).map_err(UserError)?;
     for f in files {
         println!("{}", f.display());
     }

@@ -130,7 +130,6 @@ pub fn stem(dir: &Path, unit: Unit, sc: &Scenario) -> PathBuf {
 /// Runs `sc` on the golden model and writes the vectors of `unit` in `forms` to `dir`. The files
 /// appear together when all are complete. Returns their paths.
 pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<Vec<PathBuf>, String> {
-    let stem = stem(dir, unit, sc);
     if unit == Unit::Lut {
         if sc.name != "tables" {
             return Err(format!(
@@ -138,30 +137,62 @@ pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<V
                 sc.name
             ));
         }
-        let f = lut::write(&stem.with_extension("csv"))?;
+        let f = lut::write(&stem(dir, unit, sc).with_extension("csv"))?;
         return files::commit_all(vec![f]);
     }
-    let mut recs: Vec<Box<dyn Recorder>> = Vec::new();
-    for f in forms {
-        match (unit, f) {
-            (Unit::Chip, Form::Pins) => recs.push(Box::new(record::ChipPins::create(&stem)?)),
-            (Unit::Spi, Form::Pins) => recs.push(Box::new(record::SpiPins::create(&stem)?)),
-            (Unit::Spi, Form::Csv) => recs.push(Box::new(record::SpiCsv::create(&stem.with_extension("csv"), sc.chip)?)),
-            (Unit::Ramp, Form::Csv) => recs.push(Box::new(record::RampCsv::create(&stem.with_extension("csv"))?)),
-            (Unit::Chain, Form::Csv) => recs.push(Box::new(record::ChainCsv::create(&stem.with_extension("csv"))?)),
-            _ => return Err(format!("unit {unit}: no {f:?} form")),
+    export_units(sc, &[(unit, forms.to_vec())], dir)
+}
+
+/// The units and forms a scenario of motion gets (`tmc429 run --vectors`, `tmc429 demo`): the
+/// chip's pins, and the transaction-level CSV of the SPI frames, the ramp ticks and the
+/// driver-chain datagrams.
+pub fn scenario_set() -> Vec<(Unit, Vec<Form>)> {
+    vec![
+        (Unit::Chip, vec![Form::Pins]),
+        (Unit::Spi, vec![Form::Csv]),
+        (Unit::Ramp, vec![Form::Csv]),
+        (Unit::Chain, vec![Form::Csv]),
+    ]
+}
+
+/// Runs `sc` once on the golden model and writes the vectors of several units (not `lut`,
+/// whose vectors are tables) to `dir`. The files appear together when all are complete.
+/// Returns their paths.
+pub fn export_units(sc: &Scenario, set: &[(Unit, Vec<Form>)], dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut recs: Vec<(Unit, Box<dyn Recorder>)> = Vec::new();
+    for (unit, forms) in set {
+        let (unit, stem) = (*unit, stem(dir, *unit, sc));
+        for f in forms {
+            let r: Box<dyn Recorder> = match (unit, f) {
+                (Unit::Chip, Form::Pins) => Box::new(record::ChipPins::create(&stem)?),
+                (Unit::Spi, Form::Pins) => Box::new(record::SpiPins::create(&stem)?),
+                (Unit::Spi, Form::Csv) => Box::new(record::SpiCsv::create(&stem.with_extension("csv"), sc.chip)?),
+                (Unit::Ramp, Form::Csv) => Box::new(record::RampCsv::create(&stem.with_extension("csv"))?),
+                (Unit::Chain, Form::Csv) => Box::new(record::ChainCsv::create(&stem.with_extension("csv"))?),
+                _ => return Err(format!("unit {unit}: no {f:?} form")),
+            };
+            recs.push((unit, r));
         }
     }
     let mut chip = Tmc429::new(sc.chip);
-    for r in recs.iter_mut() {
+    for (_, r) in recs.iter_mut() {
         r.reset(&chip)?;
     }
     for inp in sc.inputs() {
         let out = chip.tick(&inp);
-        for r in recs.iter_mut() {
+        for (_, r) in recs.iter_mut() {
             r.edge(&chip, &inp, &out)?;
         }
     }
+    let mut all = Vec::new();
+    for (unit, r) in recs {
+        all.extend(r.finish(&meta(unit, sc))?);
+    }
+    files::commit_all(all)
+}
+
+/// The `.meta` of a unit's pin-level vectors of `sc` (`cycles` is filled in by the writer).
+fn meta(unit: Unit, sc: &Scenario) -> Meta {
     let mut notes = sc.notes.clone();
     notes.push("line 0 is the reset edge (rst = 1); line k is the k-th CLK edge after it".into());
     if unit == Unit::Chip {
@@ -170,7 +201,7 @@ pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<V
             record::RTL_PENDING_PINS.join(", ")
         ));
     }
-    let meta = Meta {
+    Meta {
         unit: unit.name(),
         chip: sc.chip,
         fclk: sc.fclk,
@@ -179,10 +210,5 @@ pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<V
         cycles: 0,
         replay: if unit == Unit::Chip && !sc.hold_only { "pending-motion-core" } else { "ready" },
         notes,
-    };
-    let mut all = Vec::new();
-    for r in recs {
-        all.extend(r.finish(&meta)?);
     }
-    files::commit_all(all)
 }

@@ -2,9 +2,11 @@
 //!
 //! A scenario is a datagram script (the `tmc429 spi` format, `model/src/script.rs`) run by a
 //! virtual µC at a fixed SCK_C half period, exactly as `tmc429 spi` runs it, or the seeded
-//! random traffic of the co-simulation (`stimulus.rs`). Built-in scenarios are scripts made
-//! here; a scenario file is a script. Another loader (a TOML scenario) plugs in by producing a
-//! [`Scenario`] with a [`Source`].
+//! random traffic of the co-simulation (`stimulus.rs`), or pin levels recorded from another
+//! run ([`Source::Recorded`]: a TOML scenario of `tmc429 run`, whose events depend on the
+//! chip's state, is run once on the model and its pins recorded, scenario/src/vectors.rs).
+//! Built-in scenarios are scripts made here; a scenario file given to [`from_file`] is a
+//! script.
 
 use std::collections::VecDeque;
 use std::path::Path;
@@ -22,6 +24,38 @@ pub enum Source {
     Script { lines: Vec<Line>, sck_half: u32 },
     /// The co-simulation's seeded random traffic for `cycles` CLK cycles.
     Random { cycles: u64, profile: Profile },
+    /// Pin levels recorded from a run: runs of equal levels, (levels, number of CLK cycles).
+    Recorded(PinRuns),
+}
+
+/// Pin levels per CLK cycle, run-length encoded (a 60 ms run at 32 MHz is a few thousand
+/// runs, not 1.9 M entries).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct PinRuns {
+    runs: Vec<(Inputs, u32)>,
+    cycles: u64,
+}
+
+impl PinRuns {
+    pub fn new() -> PinRuns {
+        PinRuns::default()
+    }
+    /// Appends the levels of the next CLK cycle.
+    pub fn push(&mut self, i: Inputs) {
+        self.cycles += 1;
+        match self.runs.last_mut() {
+            Some((last, n)) if *last == i && *n < u32::MAX => *n += 1,
+            _ => self.runs.push((i, 1)),
+        }
+    }
+    /// Number of CLK cycles recorded.
+    pub fn cycles(&self) -> u64 {
+        self.cycles
+    }
+    /// The levels, one per CLK cycle.
+    pub fn iter(&self) -> impl Iterator<Item = Inputs> + '_ {
+        self.runs.iter().flat_map(|&(i, n)| std::iter::repeat(i).take(n as usize))
+    }
 }
 
 /// A scenario for one chip.
@@ -349,6 +383,7 @@ impl Scenario {
                     drv.step().0
                 }))
             }
+            Source::Recorded(runs) => Box::new(runs.iter()),
         }
     }
 }
