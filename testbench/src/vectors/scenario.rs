@@ -468,6 +468,34 @@ mod tests {
         assert_eq!(mine.len(), 5 * 198 + 54);
     }
 
+    /// Recorded pins replay exactly: run-length encoding keeps every cycle, and the vectors of
+    /// a recorded scenario equal those of the script it was recorded from.
+    #[test]
+    fn recorded_pins_replay_exactly() {
+        let sc = builtin("chip-hold", Chip::Tmc429, 32_000_000, 0, 0).unwrap();
+        let mut runs = PinRuns::new();
+        for i in sc.inputs() {
+            runs.push(i);
+        }
+        let n = sc.inputs().count();
+        assert_eq!(runs.cycles(), n as u64);
+        assert!(runs.runs.len() < n / 2, "{} runs for {n} cycles", runs.runs.len());
+        assert!(runs.iter().eq(sc.inputs()));
+        let rec = Scenario { source: Source::Recorded(runs), ..sc.clone() };
+        let dir = std::env::temp_dir().join(format!("tmc429-recorded-{}", std::process::id()));
+        let (a, b) = (dir.join("script"), dir.join("recorded"));
+        for (d, s) in [(&a, &sc), (&b, &rec)] {
+            std::fs::create_dir_all(d).unwrap();
+            let set = [(crate::vectors::Unit::Chip, vec![crate::vectors::Form::Pins]), (crate::vectors::Unit::Spi, vec![crate::vectors::Form::Csv])];
+            let files = crate::vectors::export_units(s, &set, d).unwrap();
+            assert_eq!(files.len(), 4);
+        }
+        for f in ["chip-chip-hold-tmc429.hex", "chip-chip-hold-tmc429.meta", "spi-chip-hold-tmc429.csv"] {
+            assert_eq!(std::fs::read(a.join(f)).unwrap(), std::fs::read(b.join(f)).unwrap(), "{f}");
+        }
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
     #[test]
     fn every_builtin_resolves() {
         for (name, _) in BUILTIN {
