@@ -305,6 +305,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         let mp = model.probes();
         let rp = rtl.probes();
         cov.cycle(&mo, &mp);
+        cov.model(&model, &mp);
         let ok = agree(cfg.compare, &mo, &mp, &ro, &rp);
         if let Some(w) = writer.as_mut() {
             let txt = ended.map(|c| c.short(chip));

@@ -8,6 +8,7 @@
 //! - [`trace`]: the side-by-side VCD;
 //! - [`cosim`]: the lock-step run and its report.
 pub mod cosim;
+mod motion_stim;
 pub mod coverage;
 pub mod rtl;
 pub mod signals;
