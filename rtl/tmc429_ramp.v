@@ -65,17 +65,21 @@ module tmc429_ramp #(
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
     wire        v_zero = v == 20'd0;
+    wire        v_lo0  = v[7:0] == 8'd0;
     // |V| >> 8: for V < 0, (~V + 1) >> 8 = ~V[18:8] + (V[7:0] == 0)
-    wire [10:0] v_mag  = v_neg ? (~v[18:8] + {10'd0, v[7:0] == 8'd0}) : v[18:8];
-    assign v_actual = v_neg ? (~{1'b0, v_mag} + 12'd1) : {1'b0, v_mag};
+    wire [10:0] v_mag  = (v[18:8] ^ {11{v_neg}}) + {10'd0, v_neg & v_lo0};
+    // sign(V) * (|V| >> 8): V >> 8 rounded toward 0
+    assign v_actual = v[19:8] + {11'd0, v_neg & ~v_lo0};
 
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
     wire        x_hi0 = x_actual[23:12] == 12'h000;
     wire        x_hi1 = x_actual[23:12] == 12'hFFF;
+    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096
+    /* verilator lint_off UNUSEDSIGNAL */     // only the borrow of the difference is used
+    wire [12:0] x_dif = {1'b0, x_actual[11:0]} - {1'b0, dx_ref_tolerance};
+    /* verilator lint_on UNUSEDSIGNAL */
     wire [12:0] x_sum = {1'b0, x_actual[11:0]} + {1'b0, dx_ref_tolerance};
-    // x >= 0: x < tol; x < 0: x + tol > 0, i.e. x_lo + tol > 4096
-    assign tol_ok = (x_hi0 & (x_actual[11:0] < dx_ref_tolerance))
-                  | (x_hi1 & x_sum[12] & (x_sum[11:0] != 12'd0));
+    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_sum[12] & (x_sum[11:0] != 12'd0));
 
     wire rnl      = ref_conf[3];
     wire soft_sw  = ref_conf[2];
@@ -89,28 +93,40 @@ module tmc429_ramp #(
 
     // ---- stop at target (C52) ------------------------------------------------------------------
     assign xeqt   = x_actual == x_target;
-    wire at_stop  = ~rm[1] & xeqt & (v_mag <= v_min);
+    /* verilator lint_off UNUSEDSIGNAL */     // borrow: |V|>>8 > v_min
+    wire [11:0] m_cmp = {1'b0, v_min} - {1'b0, v_mag};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire at_stop  = ~rm[1] & xeqt & ~m_cmp[11];
     wire zero_v   = at_stop | (stop & ~soft_sw);
 
     // ---- ramp tick (C51) -------------------------------------------------------------------------
+    // d = T - V; up = V < T; e = d - a - 1 (up) or d + a (down): lands on T when e < 0 (up)
+    // or e >= 0 (down); else V +- a. a_actual = the change of V.
     wire [11:0] t_hi  = (stop & soft_sw) ? 12'd0 : vt;
-    wire [20:0] t_v   = {t_hi[11], t_hi, 8'd0};
-    wire [20:0] v_x   = {v[19], v};
-    wire [20:0] d     = t_v - v_x;                          // T - V
-    wire        up    = ~d[20] & (d != 21'd0);              // V < T
-    wire [20:0] d_abs = d[20] ? (~d + 21'd1) : d;
-    wire        land  = d_abs <= {10'd0, a_max};            // lands exactly on T
-    wire [19:0] v_st  = up ? (v + {9'd0, a_max}) : (v - {9'd0, a_max});   // |V -+ a| < 2^19
-    wire [19:0] v_rmp = land ? t_v[19:0] : v_st;
-    wire [11:0] a_rmp = land ? d[11:0] : (up ? {1'b0, a_max} : (~{1'b0, a_max} + 12'd1));
+    wire [20:0] d     = {t_hi[11], t_hi, 8'd0} - {v[19], v};
+    wire        up    = ~d[20] & (d != 21'd0);
+    /* verilator lint_off UNUSEDSIGNAL */     // only the sign of e is used
+    wire [20:0] e     = d + ({10'd0, a_max} ^ {21{up}});
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire        land  = up ? e[20] : ~e[20];
+    wire [19:0] v_st  = v + (({9'd0, a_max} ^ {20{~up}}) + {19'd0, ~up});   // |V -+ a| < 2^19
+    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : v_st;
+    wire [11:0] a_neg = ~{1'b0, a_max} + 12'd1;
+    wire [11:0] a_rmp = land ? d[11:0] : (up ? {1'b0, a_max} : a_neg);
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
     wire [11:0] p_sum = {1'b0, acc} + {1'b0, zero_v ? 11'd0 : v_mag};
     wire        p_step = pulse_tick & p_sum[11];
-    wire [7:0]  inc   = (usrs >= 3'd6) ? 8'd1 : (8'd64 >> usrs);
-    wire [23:0] x_stp = v_neg ? (x_actual - 24'd1) : (x_actual + 24'd1);
-    wire [7:0]  u_stp = v_neg ? (ustep - inc) : (ustep + inc);
+    reg  [7:0]  inc;                 // 2^(6-usrs), usrs 7 as 6
+    always @(*) begin
+        case (usrs)
+        3'd0: inc = 8'd64;  3'd1: inc = 8'd32;  3'd2: inc = 8'd16;  3'd3: inc = 8'd8;
+        3'd4: inc = 8'd4;   3'd5: inc = 8'd2;   default: inc = 8'd1;
+        endcase
+    end
+    wire [23:0] x_stp = x_actual + {{23{v_neg}}, 1'b1};
+    wire [7:0]  u_stp = ustep + ((inc ^ {8{v_neg}}) + {7'd0, v_neg});
 
     // ---- µC writes (C3, C23) ------------------------------------------------------------------
     wire        w_x   = we & (widx == 4'd1);

@@ -234,25 +234,26 @@ module tmc429_vtarget #(
     wire [11:0] m3s    = {1'b0, m3};
     wire [11:0] res    = c_none ? 12'd0 : (c_neg ? (~m3s + 12'd1) : m3s);
 
-    reg [11:0] vt_next [0:2];
-    reg [11:0] vt_r [0:2];
-    integer i;
+    reg [35:0] vt_next;           // motor m in [12m+11:12m]
+    reg [35:0] vt_r;
+    wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
     always @(posedge clk) begin
         if (rst) begin
-            for (i = 0; i < 3; i = i + 1) begin
-                vt_next[i] <= 12'd0;
-                vt_r[i] <= 12'd0;
-            end
+            vt_next <= 36'd0;
+            vt_r <= 36'd0;
         end else if (run) begin
-            if (c_out && c_m < NMOT)
-                vt_next[c_m] <= res;
+            if (c_out)
+                case (c_m)
+                2'd0:    vt_next[11:0] <= res;
+                2'd1:    vt_next[23:12] <= res;
+                default: vt_next[35:24] <= res;
+                endcase
             if (commit)
-                for (i = 0; i < NMOT; i = i + 1)
-                    vt_r[i] <= vt_next[i];
+                vt_r <= vt_next & present;
         end
     end
 
-    assign vt = {vt_r[2], vt_r[1], vt_r[0]};
+    assign vt = vt_r;
 endmodule
 
 `default_nettype wire
