@@ -100,19 +100,21 @@ module tmc429_ramp #(
     wire zero_v   = at_stop | (stop & ~soft_sw);
 
     // ---- ramp tick (C51) -------------------------------------------------------------------------
-    // d = T - V; up = V < T; e = d - a - 1 (up) or d + a (down): lands on T when e < 0 (up)
-    // or e >= 0 (down); else V +- a. a_actual = the change of V.
+    // d = T - V; up = V < T; lands on T when |d| <= a_max, else V +- a_max; a_actual = the
+    // change of V. |d| <= a_max needs d in [-2047, 2047]: the top bits of d are all 0 or all 1.
     wire [11:0] t_hi  = (stop & soft_sw) ? 12'd0 : vt;
     wire [20:0] d     = {t_hi[11], t_hi, 8'd0} - {v[19], v};
     wire        up    = ~d[20] & (d != 21'd0);
-    /* verilator lint_off UNUSEDSIGNAL */     // only the sign of e is used
-    wire [20:0] e     = d + ({10'd0, a_max} ^ {21{up}});
+    wire        d_lo0 = d[20:11] == 10'h000;
+    wire        d_lo1 = d[20:11] == 10'h3FF;
+    /* verilator lint_off UNUSEDSIGNAL */     // only the carry / sign are used
+    wire [11:0] d_le  = {1'b0, a_max} - {1'b0, d[10:0]};                // d <= a: no borrow
+    wire [11:0] d_ge  = d[11:0] + {1'b0, a_max};                        // d >= -a: sign 0
     /* verilator lint_on UNUSEDSIGNAL */
-    wire        land  = up ? e[20] : ~e[20];
+    wire        land  = up ? (d_lo0 & ~d_le[11]) : ((d_lo1 & ~d_ge[11]) | (d == 21'd0));
     wire [19:0] v_st  = v + (({9'd0, a_max} ^ {20{~up}}) + {19'd0, ~up});   // |V -+ a| < 2^19
     wire [19:0] v_rmp = land ? {t_hi, 8'd0} : v_st;
-    wire [11:0] a_neg = ~{1'b0, a_max} + 12'd1;
-    wire [11:0] a_rmp = land ? d[11:0] : (up ? {1'b0, a_max} : a_neg);
+    wire [11:0] a_rmp = v_rmp[11:0] - v[11:0];
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------

@@ -113,12 +113,13 @@ impl Coverage {
                 Some((r, _)) => {
                     let n = reg_name(chip, a7);
                     let chain_word = matches!(r.name, "cover_datagram" | "datagram_low_word" | "datagram_high_word");
-                    let writable_in_profile = !(profile == Profile::Registers && r.name == "cover_datagram")
-                        && !(profile == Profile::MotionCore && chain_word);
+                    let core_chain_word = profile == Profile::MotionCore && chain_word;
+                    let writable_in_profile =
+                        !(profile == Profile::Registers && r.name == "cover_datagram" || core_chain_word);
                     if writable_in_profile {
                         names.push(format!("write {n}"));
                     }
-                    if !(profile == Profile::MotionCore && chain_word) {
+                    if !core_chain_word {
                         names.push(format!("read {n}"));
                     }
                 }
