@@ -1,9 +1,10 @@
 // tmc429_motor_regs: the registers of one motor (IDX 0..15, docs/model-contract.md C21-C29,
-// C63; TMC428 §8, TMC429 §8.1) with the interrupt logic that has no motion behind it.
+// C63; TMC428 §8, TMC429 §8.1) with its ramp and pulse generator (tmc429_ramp) and the
+// interrupt logic.
 //
-// Motion (ramp generator, pulse generator, switch stop, latch) is not part of this block:
-// x_actual, v_actual, v_target and ustep_count change here only by µC writes, a_actual and
-// x_latched read 0, the STOP condition is 0.
+// The motion state (x_actual, V, v_target, a_actual, ustep_count, x_latched, lp) lives in
+// tmc429_ramp, which also takes the µC writes to it; this block holds the configuration
+// registers, the read mux and the interrupt conditions, events and flags.
 `default_nettype none
 
 module tmc429_motor_regs #(
@@ -19,40 +20,64 @@ module tmc429_motor_regs #(
     output reg  [23:0] rdata,
     input  wire        sw_l,      // mapped left switch (C60)
     input  wire        sw_r,      // mapped right switch
+    input  wire        ramp_tick, // phase 30 of a ramp frame (C40, C41)
+    input  wire        pulse_tick,// phase 31 of a pulse frame
+    input  wire [11:0] vt,        // committed target velocity (C41)
     output wire        xeqt,      // x_actual == x_target
     output wire        irq,       // interrupt flags != 0
+    // registers for the target velocity unit and the frame schedule
     output reg  [23:0] x_target,
-    output reg  [23:0] x_actual,
-    output reg  [11:0] v_actual,  // v_actual register: V = v_actual * 256 (C23)
-    output reg  [11:0] v_target,
-    output reg  [7:0]  ustep
+    output reg  [1:0]  rm,
+    output reg  [10:0] v_min,
+    output reg  [10:0] v_max,
+    output reg  [6:0]  pmul,
+    output reg  [3:0]  pdiv,
+    output reg  [3:0]  pulse_div,
+    output reg  [3:0]  ramp_div,
+    // motion state (probes)
+    output wire [23:0] x_actual,
+    output wire [19:0] v,
+    output wire [11:0] v_target,
+    output wire [11:0] a_actual,
+    output wire [7:0]  ustep,
+    output wire [10:0] pulse_acc,
+    output wire        step,
+    output wire        dir
 );
-    reg [10:0] v_min, v_max, a_max, a_threshold;
+    reg [10:0] a_max, a_threshold;
     reg [2:0]  is_agtat, is_aleat, is_v0, usrs;
-    reg [6:0]  pmul;
-    reg [3:0]  pdiv, ref_conf, pulse_div, ramp_div;
-    reg [1:0]  rm;
+    reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
     reg [11:0] dx_ref_tolerance;
-    reg        lp;
+    wire       lp, stop, tol_ok;
+    wire [23:0] x_latched;
+    wire [11:0] v_actual;
 
     localparam HAS_IDX8  = (CHIP != 2);   // TMC4210: no current scaling register
     localparam HAS_IDX15 = (CHIP != 0);   // TMC428: IDX 15 unused
 
+    // ---- ramp and pulse generator, switch stop, latch ------------------------------------
+    tmc429_ramp #(.HAS_USTEP(HAS_IDX15)) u_ramp (
+        .clk(clk), .rst(rst), .run(run), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
+        .rm(rm), .x_target(x_target), .v_min(v_min), .a_max(a_max), .ref_conf(ref_conf),
+        .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
+        .we(we), .widx(widx), .wdata(wdata),
+        .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
+        .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
+        .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .v_actual(v_actual));
+
     // ---- interrupt conditions (C63), from the old state -------------------------------
     wire        sel_sw   = ref_conf[3] ? sw_r : sw_l;          // REF_RnL selects the switch
-    wire [23:0] x_abs    = x_actual[23] ? (~x_actual + 24'd1) : x_actual;
-    wire        x_is_min = x_actual == 24'h800000;              // |x| = 2^23
-    wire        x_ge_tol = x_is_min | (x_abs >= {12'd0, dx_ref_tolerance});
+    wire        x_ge_tol = ~tol_ok;                             // |x_actual| >= tolerance
     wire [7:0]  cond = {
         sw_r,                       // 7 STOP_RIGHT_HIGH
         sw_l,                       // 6 STOP_LEFT_HIGH
         ~sw_r,                      // 5 STOP_RIGHT_LOW
         ~sw_l,                      // 4 STOP_LEFT_LOW
-        1'b0,                       // 3 STOP (switch stop: motion core)
+        stop,                       // 3 STOP
         (x_actual == 24'd0) & ~sel_sw,  // 2 REF_MISS
         sel_sw & x_ge_tol,          // 1 REF_WRONG
-        x_actual == x_target        // 0 POS_END
+        xeqt                        // 0 POS_END
     };
     wire [7:0] events = run ? (cond & ~int_hist) : 8'd0;
 
@@ -60,23 +85,20 @@ module tmc429_motor_regs #(
     wire [7:0] mask_nx = w_int ? wdata[15:8] : int_mask;
     wire [7:0] w1c     = w_int ? wdata[7:0] : 8'd0;
 
-    assign xeqt = x_actual == x_target;
     assign irq  = int_flags != 8'd0;
 
     always @(posedge clk) begin
         if (rst) begin
-            x_target <= 24'd0;  x_actual <= 24'd0;
+            x_target <= 24'd0;
             v_min <= 11'd0;     v_max <= 11'd0;
-            v_target <= 12'd0;  v_actual <= 12'd0;
             a_max <= 11'd0;
             is_agtat <= 3'd0;   is_aleat <= 3'd0;  is_v0 <= 3'd0;  a_threshold <= 11'd0;
             pmul <= 7'd0;       pdiv <= 4'd0;
-            ref_conf <= 4'd0;   rm <= 2'd0;        lp <= 1'b0;
+            ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
             int_hist <= 8'b0011_0101;   // the conditions of the reset state: no event at power-on
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
             dx_ref_tolerance <= 12'd0;
-            ustep <= 8'd0;
         end else begin
             if (run)
                 int_hist <= cond;
@@ -85,12 +107,8 @@ module tmc429_motor_regs #(
             if (we) begin
                 case (widx)
                 4'd0:  x_target <= wdata;
-                4'd1:  x_actual <= wdata;
                 4'd2:  v_min <= wdata[10:0];
                 4'd3:  v_max <= wdata[10:0];
-                4'd4:  v_target <= wdata[11:0];
-                // C23: -2048 is stored as -2047 (the magnitude has 11 bits)
-                4'd5:  v_actual <= (wdata[11:0] == 12'h800) ? 12'h801 : wdata[11:0];
                 4'd6:  a_max <= wdata[10:0];
                 4'd8:  if (HAS_IDX8) begin
                            is_agtat <= wdata[22:20];
@@ -106,9 +124,9 @@ module tmc429_motor_regs #(
                            usrs <= wdata[2:0];
                        end
                 4'd13: dx_ref_tolerance <= wdata[11:0];
-                4'd14: lp <= 1'b1;          // C27: a write arms the latch, data discarded
-                4'd15: if (HAS_IDX15) ustep <= wdata[7:0];
-                default: ;                  // IDX 7 (a_actual) and 11 (above): no storage
+                // IDX 1, 4, 5, 14, 15: motion state in tmc429_ramp; IDX 7 (a_actual) and
+                // 11 (above): no storage here
+                default: ;
                 endcase
             end
         end
@@ -123,7 +141,7 @@ module tmc429_motor_regs #(
         4'd4:  rdata = {12'd0, v_target};
         4'd5:  rdata = {12'd0, v_actual};
         4'd6:  rdata = {13'd0, a_max};
-        4'd7:  rdata = 24'd0;           // a_actual: no ramp tick without the motion core
+        4'd7:  rdata = {12'd0, a_actual};
         4'd8:  rdata = HAS_IDX8 ? {1'b0, is_agtat, 1'b0, is_aleat, 1'b0, is_v0, 1'b0, a_threshold}
                                 : 24'd0;
         4'd9:  rdata = {8'd0, 1'b1, pmul, 4'd0, pdiv};     // C22: bit 15 reads 1
@@ -131,7 +149,7 @@ module tmc429_motor_regs #(
         4'd11: rdata = {8'd0, int_mask, int_flags};
         4'd12: rdata = {8'd0, pulse_div, ramp_div, 5'd0, usrs};
         4'd13: rdata = {12'd0, dx_ref_tolerance};
-        4'd14: rdata = 24'd0;           // x_latched: latched only while moving
+        4'd14: rdata = x_latched;
         default: rdata = HAS_IDX15 ? {16'd0, ustep} : 24'd0;
         endcase
     end

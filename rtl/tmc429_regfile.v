@@ -1,10 +1,12 @@
-// tmc429_regfile: the register file (docs/model-contract.md C20-C31, C63-C66; TMC428 §7-§9,
-// TMC429 §8) without the motion core and the driver chain behind it.
+// tmc429_regfile: the register file and the motion core (docs/model-contract.md C20-C31,
+// C40-C66; TMC428 §7-§9, TMC429 §8) without the driver chain behind it.
 //
 // Executes the 32-bit datagram `cmd` when `exec` pulses (C12), serves the read port of the
 // SPI slave (data of the old state), builds the status byte, the interrupt output, the
-// position compare and the power-down state. Per CHIP (0 TMC428, 1 TMC429, 2 TMC4210) the
-// registers a variant lacks read 0 and ignore writes (C21).
+// position compare and the power-down state. Holds the pre-divider counter and the frame
+// schedule (C40, C41): the shared target velocity unit (tmc429_vtarget) and, per motor, the
+// registers with the ramp and pulse generator (tmc429_motor_regs, tmc429_ramp). Per CHIP
+// (0 TMC428, 1 TMC429, 2 TMC4210) the registers a variant lacks read 0 and ignore writes (C21).
 `default_nettype none
 
 module tmc429_regfile #(
@@ -25,12 +27,16 @@ module tmc429_regfile #(
     output reg         poscmp_q,      // position compare match, registered (C65)
     output reg         pd,            // powered down
     output reg  [19:0] prescaler,     // free-running CLK counter (C40), 20 bits as the model
-    // probes
-    output wire [23:0] m0_x_target, m1_x_target, m2_x_target,
-    output wire [23:0] m0_x_actual, m1_x_actual, m2_x_actual,
-    output wire [11:0] m0_v_actual, m1_v_actual, m2_v_actual,
-    output wire [11:0] m0_v_target, m1_v_target, m2_v_target,
-    output wire [7:0]  m0_ustep, m1_ustep, m2_ustep
+    // probes, motor m in bits [w*(m+1)-1 : w*m]
+    output wire [71:0] p_x_target,
+    output wire [71:0] p_x_actual,
+    output wire [59:0] p_v,
+    output wire [35:0] p_v_target,
+    output wire [35:0] p_a_actual,
+    output wire [23:0] p_ustep,
+    output wire [32:0] p_pulse_acc,
+    output wire [2:0]  p_step,
+    output wire [2:0]  p_dir
 );
     localparam HAS_CHAIN = (CHIP != 2);   // JDX 0..3 (driver chain), TMC4210: absent
     localparam HAS_429   = (CHIP != 0);   // JDX 4, 5, 6, 9
@@ -69,40 +75,70 @@ module tmc429_regfile #(
         .inv_ref(if_conf[0]), .en_refr(if_conf[8]), .refmux(refmux), .mot1r(mot1r),
         .l(sw_l), .r(sw_r));
 
+    // ---- frame schedule (C40, C41) ----------------------------------------------------
+    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div
+    wire [14:0] frame = prescaler[19:5];
+    reg  [3:0]  ones;
+    integer k;
+    always @(*) begin
+        ones = 4'd15;
+        for (k = 14; k >= 0; k = k - 1)
+            if (!frame[k])
+                ones = k[3:0];
+    end
+    wire ph_ramp  = prescaler[4:0] == 5'd30;
+    wire ph_pulse = prescaler[4:0] == 5'd31;
+
     // ---- motors -----------------------------------------------------------------------
-    wire [23:0] m_rdata0, m_rdata1, m_rdata2;
+    wire [71:0] m_rdata;      // read data of motor m in [24m+23:24m]
     wire [2:0]  xeqt, irq;
     wire        m_present1 = (CHIP != 2);
+    localparam  NMOT = (CHIP == 2) ? 1 : 3;
 
-    tmc429_motor_regs #(.CHIP(CHIP)) u_m0 (
-        .clk(clk), .rst(rst), .run(run),
-        .we(wr & (a7[6:4] == 3'b000)), .widx(a7[3:0]), .wdata(wdata),
-        .ridx(rd_addr[3:0]), .rdata(m_rdata0),
-        .sw_l(sw_l[0]), .sw_r(sw_r[0]), .xeqt(xeqt[0]), .irq(irq[0]),
-        .x_target(m0_x_target), .x_actual(m0_x_actual), .v_actual(m0_v_actual),
-        .v_target(m0_v_target), .ustep(m0_ustep));
-    tmc429_motor_regs #(.CHIP(CHIP)) u_m1 (
-        .clk(clk), .rst(rst), .run(run),
-        .we(wr & m_present1 & (a7[6:4] == 3'b001)), .widx(a7[3:0]), .wdata(wdata),
-        .ridx(rd_addr[3:0]), .rdata(m_rdata1),
-        .sw_l(sw_l[1]), .sw_r(sw_r[1]), .xeqt(xeqt[1]), .irq(irq[1]),
-        .x_target(m1_x_target), .x_actual(m1_x_actual), .v_actual(m1_v_actual),
-        .v_target(m1_v_target), .ustep(m1_ustep));
-    tmc429_motor_regs #(.CHIP(CHIP)) u_m2 (
-        .clk(clk), .rst(rst), .run(run),
-        .we(wr & m_present1 & (a7[6:4] == 3'b010)), .widx(a7[3:0]), .wdata(wdata),
-        .ridx(rd_addr[3:0]), .rdata(m_rdata2),
-        .sw_l(sw_l[2]), .sw_r(sw_r[2]), .xeqt(xeqt[2]), .irq(irq[2]),
-        .x_target(m2_x_target), .x_actual(m2_x_actual), .v_actual(m2_v_actual),
-        .v_target(m2_v_target), .ustep(m2_ustep));
+    wire [5:0]  m_rm;
+    wire [32:0] m_vmin, m_vmax;
+    wire [20:0] m_pmul;
+    wire [11:0] m_pdiv, m_pulse_div, m_ramp_div;
+    wire [35:0] m_vt;
+
+    genvar g;
+    generate
+        for (g = 0; g < 3; g = g + 1) begin : mot
+            wire present = (g == 0) | m_present1;
+            tmc429_motor_regs #(.CHIP(CHIP)) u_m (
+                .clk(clk), .rst(rst), .run(run & present),
+                .we(wr & present & (a7[6:4] == g)), .widx(a7[3:0]), .wdata(wdata),
+                .ridx(rd_addr[3:0]), .rdata(m_rdata[24*g+23:24*g]),
+                .sw_l(sw_l[g]), .sw_r(sw_r[g]),
+                .ramp_tick(ph_ramp & (ones >= m_ramp_div[4*g+3:4*g])),
+                .pulse_tick(ph_pulse & (ones >= m_pulse_div[4*g+3:4*g])),
+                .vt(m_vt[12*g+11:12*g]),
+                .xeqt(xeqt[g]), .irq(irq[g]),
+                .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
+                .v_min(m_vmin[11*g+10:11*g]), .v_max(m_vmax[11*g+10:11*g]),
+                .pmul(m_pmul[7*g+6:7*g]), .pdiv(m_pdiv[4*g+3:4*g]),
+                .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
+                .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]),
+                .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
+                .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
+                .step(p_step[g]), .dir(p_dir[g]));
+        end
+    endgenerate
+
+    // ---- target velocity (C41, C50) -------------------------------------------------------
+    tmc429_vtarget #(.NMOT(NMOT)) u_vt (
+        .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
+        .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
+        .v_min(m_vmin), .v_max(m_vmax), .v_target(p_v_target),
+        .pmul(m_pmul), .pdiv(m_pdiv), .vt(m_vt));
 
     // ---- position compare (C65) -------------------------------------------------------
     reg [23:0] pc_x;
     always @(*) begin
         case (if_conf[7:6])
-        2'd0:    pc_x = m0_x_actual;
-        2'd1:    pc_x = m1_x_actual;
-        default: pc_x = m2_x_actual;   // 3 selects motor 3 as well
+        2'd0:    pc_x = p_x_actual[23:0];
+        2'd1:    pc_x = p_x_actual[47:24];
+        default: pc_x = p_x_actual[71:48];   // 3 selects motor 3 as well
         endcase
     end
     wire pc_match = HAS_429 && (pc_x == pos_comp);
@@ -189,11 +225,11 @@ module tmc429_regfile #(
         if (rd_addr[6]) begin
             rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
         end else if (rd_addr[5:4] == 2'b00) begin
-            rd_data = m_rdata0;
+            rd_data = m_rdata[23:0];
         end else if (rd_addr[5:4] == 2'b01) begin
-            rd_data = m_present1 ? m_rdata1 : 24'd0;
+            rd_data = m_present1 ? m_rdata[47:24] : 24'd0;
         end else if (rd_addr[5:4] == 2'b10) begin
-            rd_data = m_present1 ? m_rdata2 : 24'd0;
+            rd_data = m_present1 ? m_rdata[71:48] : 24'd0;
         end else begin
             case (rd_addr[3:0])
             // datagram_low/high: the readback shift register belongs to the driver chain

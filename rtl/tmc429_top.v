@@ -5,10 +5,10 @@
 // tmc429_model::Inputs / Outputs; the probe_* ports are the probe bundle
 // (tmc429_model::Probes) that co-simulation compares every cycle.
 //
-// Blocks present: synchronizers (C4), µC SPI slave (C10-C13), register file with the side
-// effects that have no motion behind them (C20-C31, C63-C66), RAM (C30). Not yet present:
-// motion core (ramp, pulse, switch stop, latch) and driver chain; their pins and probes
-// are driven to their reset values.
+// Blocks present: synchronizers (C4), µC SPI slave (C10-C13), register file (C20-C31) with
+// the motion core (C40-C66: target velocity, ramp and pulse generators, switch stop, latch,
+// interrupts), RAM (C30). Not yet present: the driver chain; its pins and probes are driven
+// to their reset values.
 `default_nettype none
 
 module tmc429_top #(
@@ -89,10 +89,15 @@ module tmc429_top #(
         .frame_start(frame_start), .exec(exec), .cmd(cmd),
         .active(active), .sdo(sdo));
 
-    // ---- register file ---------------------------------------------------------------------
+    // ---- register file and motion core ---------------------------------------------------
     wire        nint_q, sdo_int, poscmp_q, pd;
     wire [19:0] prescaler;
-    wire [11:0] v_act0, v_act1, v_act2;
+    wire [71:0] p_x_target, p_x_actual;
+    wire [59:0] p_v;
+    wire [35:0] p_v_target, p_a_actual;
+    wire [23:0] p_ustep;
+    wire [32:0] p_pulse_acc;
+    wire [2:0]  p_step, p_dir;
 
     tmc429_regfile #(.CHIP(CHIP)) u_regs (
         .clk(clk), .rst(rst),
@@ -101,14 +106,9 @@ module tmc429_top #(
         .ref_q(ref_q), .refr_q(refr_q),
         .status(status), .nint_q(nint_q), .sdo_int(sdo_int),
         .poscmp_q(poscmp_q), .pd(pd), .prescaler(prescaler),
-        .m0_x_target(probe_m0_x_target), .m1_x_target(probe_m1_x_target),
-        .m2_x_target(probe_m2_x_target),
-        .m0_x_actual(probe_m0_x_actual), .m1_x_actual(probe_m1_x_actual),
-        .m2_x_actual(probe_m2_x_actual),
-        .m0_v_actual(v_act0), .m1_v_actual(v_act1), .m2_v_actual(v_act2),
-        .m0_v_target(probe_m0_v_target), .m1_v_target(probe_m1_v_target),
-        .m2_v_target(probe_m2_v_target),
-        .m0_ustep(probe_m0_ustep), .m1_ustep(probe_m1_ustep), .m2_ustep(probe_m2_ustep));
+        .p_x_target(p_x_target), .p_x_actual(p_x_actual), .p_v(p_v),
+        .p_v_target(p_v_target), .p_a_actual(p_a_actual), .p_ustep(p_ustep),
+        .p_pulse_acc(p_pulse_acc), .p_step(p_step), .p_dir(p_dir));
 
     // ---- pins (C11, C90) --------------------------------------------------------------------
     // While a frame is active the pin carries the data bit, otherwise nINT (registered: INT
@@ -129,16 +129,15 @@ module tmc429_top #(
     assign nscs3    = 1'b1;
 
     // ---- probes -------------------------------------------------------------------------------
-    // V = v_actual * 256 while no ramp runs (C23)
-    assign probe_m0_v_internal = {v_act0, 8'd0};
-    assign probe_m1_v_internal = {v_act1, 8'd0};
-    assign probe_m2_v_internal = {v_act2, 8'd0};
-    assign probe_m0_a_actual = 12'd0;   assign probe_m1_a_actual = 12'd0;
-    assign probe_m2_a_actual = 12'd0;
-    assign probe_m0_step = 1'b0;        assign probe_m1_step = 1'b0;   assign probe_m2_step = 1'b0;
-    assign probe_m0_dir = 1'b0;         assign probe_m1_dir = 1'b0;    assign probe_m2_dir = 1'b0;
-    assign probe_m0_pulse_acc = 11'd0;  assign probe_m1_pulse_acc = 11'd0;
-    assign probe_m2_pulse_acc = 11'd0;
+    assign {probe_m2_x_target, probe_m1_x_target, probe_m0_x_target} = p_x_target;
+    assign {probe_m2_x_actual, probe_m1_x_actual, probe_m0_x_actual} = p_x_actual;
+    assign {probe_m2_v_internal, probe_m1_v_internal, probe_m0_v_internal} = p_v;
+    assign {probe_m2_v_target, probe_m1_v_target, probe_m0_v_target} = p_v_target;
+    assign {probe_m2_a_actual, probe_m1_a_actual, probe_m0_a_actual} = p_a_actual;
+    assign {probe_m2_ustep, probe_m1_ustep, probe_m0_ustep} = p_ustep;
+    assign {probe_m2_pulse_acc, probe_m1_pulse_acc, probe_m0_pulse_acc} = p_pulse_acc;
+    assign {probe_m2_step, probe_m1_step, probe_m0_step} = p_step;
+    assign {probe_m2_dir, probe_m1_dir, probe_m0_dir} = p_dir;
     assign probe_chain_state = 8'd0;
     assign probe_chain_cell = 8'd0;
     assign probe_chain_motor = 8'd0;

@@ -35,8 +35,9 @@ use sync::SyncBank;
 pub const PRESCALER_BITS: u32 = 20;
 const PRESCALER_MASK: u32 = (1 << PRESCALER_BITS) - 1;
 
-/// Phases of the 32-cycle frame (C41).
-pub const PHASE_SNAPSHOT: [u32; 3] = [0, 9, 18];
+/// Phases of the 32-cycle frame (C41): target snapshot of motor m, commit of all targets.
+pub const PHASE_SNAPSHOT: [u32; 3] = [0, 7, 14];
+pub const PHASE_COMMIT: u32 = 29;
 pub const PHASE_RAMP: u32 = 30;
 pub const PHASE_PULSE: u32 = 31;
 
@@ -319,8 +320,9 @@ impl Tmc429 {
         match phase {
             PHASE_RAMP => !self.motors[..n].iter().any(|m| m.rm != HOLD_MODE && due(m.ramp_div)),
             PHASE_PULSE => !self.motors[..n].iter().any(|m| due(m.pulse_div) && m.v.unsigned_abs() >= 256),
+            PHASE_COMMIT => self.motors[..n].iter().all(|m| m.vt_next == m.vt),
             p => match PHASE_SNAPSHOT.iter().position(|&s| s == p) {
-                Some(i) if i < n => self.motors[i].target_velocity() == self.motors[i].vt,
+                Some(i) if i < n => self.motors[i].target_velocity() == self.motors[i].vt_next,
                 _ => true,
             },
         }
@@ -364,7 +366,7 @@ impl Tmc429 {
         if !self.power_down {
             pins_changed |= self.drivers(pins);
             let phase = self.prescaler & 31;
-            let event_phase = PHASE_SNAPSHOT.contains(&phase) || phase >= PHASE_RAMP;
+            let event_phase = PHASE_SNAPSHOT.contains(&phase) || phase >= PHASE_COMMIT;
             let inputs = (pins, self.global.mux_switches);
             if event_phase || !self.quiet || inputs != self.quiet_pins || !self.fast_path {
                 let before = self.motors;
@@ -427,9 +429,13 @@ impl Tmc429 {
         let (left, right) = switches::levels(self.chip, &self.global, pins);
         let n = self.motor_count();
         for (i, m) in self.motors.iter_mut().enumerate().take(n) {
-            // Target snapshot (C41).
+            // Target snapshot (C41): computed from the old state, in use from the commit on.
+            let vt = m.vt;
             if phase == PHASE_SNAPSHOT[i] {
-                m.vt = m.target_velocity();
+                m.vt_next = m.target_velocity();
+            }
+            if phase == PHASE_COMMIT {
+                m.vt = m.vt_next;
             }
             let l = (left >> i) & 1 != 0;
             let r = (right >> i) & 1 != 0;
@@ -437,8 +443,8 @@ impl Tmc429 {
             let tol_ok = x.unsigned_abs() < m.dx_ref_tolerance as u32;
             let rnl = m.ref_conf & REF_RNL != 0;
             let sel = if rnl { r } else { l };
-            let moving_neg = m.v < 0 || (m.v == 0 && m.vt < 0);
-            let moving_pos = m.v > 0 || (m.v == 0 && m.vt > 0);
+            let moving_neg = m.v < 0 || (m.v == 0 && vt < 0);
+            let moving_pos = m.v > 0 || (m.v == 0 && vt > 0);
             // The tolerance window masks only the REF_RnL-selected switch.
             let stop_l = m.ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && (rnl || !tol_ok);
             let stop_r = m.ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && (!rnl || !tol_ok);
@@ -466,12 +472,12 @@ impl Tmc429 {
             let v_old = m.v;
             // Ramp tick (C51).
             if phase == PHASE_RAMP && m.rm != HOLD_MODE && (frame & ((1 << m.ramp_div) - 1)) == (1 << m.ramp_div) - 1 {
-                let t = if stop && soft { 0 } else { m.vt * 256 };
+                let t = if stop && soft { 0 } else { vt * 256 };
                 let v_new = Motor::approach(v_old, t, m.a_max);
                 m.a_actual = v_new - v_old;
                 m.v = v_new;
                 if m.rm <= SOFT_MODE {
-                    m.v_target = (m.vt as u32 & 0xFFF) as u16;
+                    m.v_target = (vt as u32 & 0xFFF) as u16;
                 }
             }
             if stop_at_target || hard_stop {

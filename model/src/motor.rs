@@ -92,8 +92,10 @@ pub struct Motor {
     pub ustep: u8,
     /// Internal velocity V in 1/256 units (sign + 19-bit magnitude).
     pub v: i32,
-    /// Target velocity of the last snapshot (C41, C50), integer units.
+    /// Target velocity in use (C41, C50), integer units: the last committed snapshot.
     pub vt: i32,
+    /// Target velocity of this frame's snapshot, committed to `vt` at phase 29 (C41).
+    pub vt_next: i32,
     /// Pulse accumulator (11 bit).
     pub acc: u16,
     /// A step was made in the last cycle.
@@ -139,6 +141,7 @@ impl Motor {
             ustep: 0,
             v: 0,
             vt: 0,
+            vt_next: 0,
             acc: 0,
             step: false,
             dir: false,

@@ -225,3 +225,40 @@ fn right_switch_interrupts() {
     h.wait(4);
     assert_eq!(rd(&mut h, 0, INTERRUPT), 0xF020, "STOP_RIGHT_LOW");
 }
+
+/// C41 with C61: a snapshot acts only from the commit at phase 29 on. Motor at V = 0 (a_max 0)
+/// on an active left switch in VELOCITY_MODE: a negative v_target makes vt < 0, which starts a
+/// stop condition — at the ramp-tick edge after the commit, not the cycle after the snapshot.
+#[test]
+fn target_snapshot_acts_from_the_commit() {
+    use tmc429_model::{Inputs, Tmc429, PHASE_COMMIT, PHASE_SNAPSHOT};
+    let mut c = Tmc429::new(Chip::Tmc429);
+    let inp = Inputs { ref1: true, ..Inputs::default() };
+    c.tick(&inp); // past frame 0's snapshot of motor 1 (a target of 0)
+    c.write_register(0x0B, 0xFF00); // all interrupts of motor 1 enabled
+    c.write_register(0x03, 2047); // v_max
+    c.write_register(0x04, (-50i32) as u32 & 0xFFF); // v_target
+    c.write_register(0x0A, 2); // VELOCITY_MODE, a_max stays 0: V stays 0
+    // settle the switch (C4), then run to the cycle before motor 1's snapshot
+    for _ in 0..4 {
+        c.tick(&inp);
+    }
+    c.write_register(0x0B, 0xFFFF); // clear the switch events
+    while c.probes().prescaler & 31 != PHASE_SNAPSHOT[0] {
+        c.tick(&inp);
+    }
+    let m = c.motor(0);
+    assert_eq!((m.vt, m.vt_next, m.int_flags & INT_STOP), (0, 0, 0));
+    c.tick(&inp); // snapshot edge
+    assert_eq!((c.motor(0).vt, c.motor(0).vt_next), (0, -50));
+    while c.probes().prescaler & 31 != PHASE_COMMIT {
+        c.tick(&inp);
+        assert_eq!(c.motor(0).int_flags & INT_STOP, 0, "no stop before the commit");
+    }
+    c.tick(&inp); // commit edge: vt changes in its new state, the stop reads the old one
+    assert_eq!(c.motor(0).vt, -50);
+    assert_eq!(c.motor(0).int_flags & INT_STOP, 0);
+    c.tick(&inp); // phase 30: V = 0, vt < 0, left switch active: STOP
+    assert_eq!(c.motor(0).int_flags & INT_STOP, INT_STOP);
+    assert_eq!(c.motor(0).v, 0);
+}

@@ -24,9 +24,10 @@ pub struct Args {
     #[arg(long, value_name = "FILE")]
     pub vcd: Option<PathBuf>,
     /// Stimulus profile: `registers` (motors held, no driver-chain traffic), `motion` (moves in
-    /// every mode, switch events, driver-chain and Step/Dir configurations) or `full` (any
-    /// register and RAM word with any data).
-    #[arg(long, default_value = "registers", value_parser = ["registers", "motion", "full"])]
+    /// every mode, switch events, driver-chain and Step/Dir configurations), `motion-core`
+    /// (`motion` without the traffic seen only through the driver chain: datagram words, cover
+    /// datagram, refmux) or `full` (any register and RAM word with any data).
+    #[arg(long, default_value = "registers", value_parser = ["registers", "motion", "motion-core", "full"])]
     pub profile: String,
     /// Print the functional coverage table and the bins never hit.
     #[arg(long)]

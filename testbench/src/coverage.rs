@@ -112,12 +112,16 @@ impl Coverage {
             match regmap::lookup(chip, a7) {
                 Some((r, _)) => {
                     let n = reg_name(chip, a7);
+                    let chain_word = matches!(r.name, "cover_datagram" | "datagram_low_word" | "datagram_high_word");
+                    let core_chain_word = profile == Profile::MotionCore && chain_word;
                     let writable_in_profile =
-                        !(profile == Profile::Registers && r.name == "cover_datagram");
+                        !(profile == Profile::Registers && r.name == "cover_datagram" || core_chain_word);
                     if writable_in_profile {
                         names.push(format!("write {n}"));
                     }
-                    names.push(format!("read {n}"));
+                    if !core_chain_word {
+                        names.push(format!("read {n}"));
+                    }
                 }
                 None => unused = true,
             }
@@ -166,7 +170,7 @@ impl Coverage {
         for s in switch_bits {
             names.push(format!("ref_switches {s} active"));
         }
-        if chip != Chip::Tmc4210 {
+        if chip != Chip::Tmc4210 && profile != Profile::MotionCore {
             names.push("CDGW armed by a datagram_low/high write".into());
             names.push("cover_pos 63 reads back 0".into());
         }
@@ -186,9 +190,12 @@ impl Coverage {
             names.push("REFR pin change".into());
             names.push("en_refr: REFR switches read".into());
         }
-        let motion = profile == Profile::Motion;
+        let motion = matches!(profile, Profile::Motion | Profile::MotionCore);
         if motion {
-            names.extend(motion_bins(chip));
+            let chain_only = ["cover datagram sent", "refmux: switches sampled"];
+            names.extend(
+                motion_bins(chip).into_iter().filter(|n| profile == Profile::Motion || !chain_only.contains(&n.as_str())),
+            );
         }
         Coverage {
             bins: names.into_iter().map(|n| (n, 0)).collect(),

@@ -57,7 +57,7 @@ fn code_strategy() -> impl Strategy<Value = u8> {
 impl Stimulus {
     /// The next transaction of the motion profile (pending sequences first, by the caller).
     pub(crate) fn motion_txn(&mut self) -> Txn {
-        debug_assert_eq!(self.profile, Profile::Motion);
+        debug_assert!(matches!(self.profile, Profile::Motion | Profile::MotionCore));
         let chain = self.chip != Chip::Tmc4210;
         let step_dir = self.chip != Chip::Tmc428;
         let weights = [

@@ -104,6 +104,12 @@ pub enum Profile {
     /// switch events and latching, current scaling, driver-chain configurations, cover
     /// datagrams, continuous update, refmux, Step/Dir — mixed with the traffic of `Full`.
     Motion,
+    /// `Motion` without the traffic whose effect reaches the compared signals only through the
+    /// driver chain, for an RTL without the chain: accesses to datagram_low/high_word and
+    /// cover_datagram become reads of cover_pos_len (their readback, CDGW and cw come from the
+    /// chain), refmux stays 0 (the switches would be sampled by the chain). Datagrams are
+    /// still requested (steps, continuous update) but no compared signal depends on them.
+    MotionCore,
 }
 
 impl Profile {
@@ -112,6 +118,7 @@ impl Profile {
             Profile::Full => "full",
             Profile::Registers => "registers",
             Profile::Motion => "motion",
+            Profile::MotionCore => "motion-core",
         }
     }
     pub fn parse(s: &str) -> Option<Profile> {
@@ -119,6 +126,7 @@ impl Profile {
             "full" => Some(Profile::Full),
             "registers" => Some(Profile::Registers),
             "motion" => Some(Profile::Motion),
+            "motion-core" => Some(Profile::MotionCore),
             _ => None,
         }
     }
@@ -129,8 +137,17 @@ pub fn motors(chip: Chip) -> usize {
     if chip == Chip::Tmc4210 { 1 } else { 3 }
 }
 
-/// Adjusts a frame to a profile (see [`Profile::Registers`]).
+/// Adjusts a frame to a profile (see [`Profile::Registers`], [`Profile::MotionCore`]).
 pub fn sanitize(profile: Profile, f: &mut Frame) {
+    if profile == Profile::MotionCore {
+        let a7 = f.a7();
+        if matches!(a7, 0x30 | 0x31 | 0x33) {
+            f.datagram = 0x32 << 25 | 1 << 24;
+        } else if a7 == 0x3F && !f.is_read() {
+            f.datagram &= !(1 << 20); // refmux
+        }
+        return;
+    }
     if profile != Profile::Registers || f.is_read() {
         return;
     }
@@ -157,7 +174,7 @@ pub fn sanitize(profile: Profile, f: &mut Frame) {
 /// Transactions that bring a fresh chip into the state a profile assumes.
 pub fn prologue(chip: Chip, profile: Profile) -> Vec<Txn> {
     match profile {
-        Profile::Full | Profile::Motion => Vec::new(),
+        Profile::Full | Profile::Motion | Profile::MotionCore => Vec::new(),
         Profile::Registers => (0..motors(chip))
             .map(|m| Txn::Frame(Frame::write((m as u8) << 4 | 10, 3)))
             .collect(),
@@ -287,13 +304,17 @@ impl Stimulus {
 
     /// The next transaction.
     pub fn next_txn(&mut self) -> Txn {
-        if let Some(t) = self.pending.pop_front() {
-            return t;
+        let mut t = if let Some(t) = self.pending.pop_front() {
+            t
+        } else if matches!(self.profile, Profile::Motion | Profile::MotionCore) {
+            self.motion_txn()
+        } else {
+            self.register_txn()
+        };
+        if let Txn::Frame(f) = &mut t {
+            sanitize(self.profile, f);
         }
-        if self.profile == Profile::Motion {
-            return self.motion_txn();
-        }
-        self.register_txn()
+        t
     }
 
     /// A transaction of the register profiles: a frame, a pin change, idle time, power down or

@@ -1,0 +1,180 @@
+// tmc429_ramp: ramp generator and pulse generator of one motor, with switch stop, stop at
+// target and position latch (docs/model-contract.md C42-C44, C51-C54, C61, C62, C3;
+// TMC428 §8.6-§8.16).
+//
+// Every input is a level of the old state (C1); every output is a register of this unit
+// except the combinational condition outputs (xeqt, stop, tol_ok, v_actual, v_mag) which are
+// functions of its registers and inputs. The port list is the boundary at which test vectors of
+// the unit are taken (rtl/README.md).
+//
+// Per cycle with run = 1, from the old state:
+//   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol_L, stop_R
+//                  symmetric; tol only for the REF_RnL-selected switch, |x_actual| < tolerance
+//   ramp tick      (ramp_tick, rm != HOLD) V moves toward T = 256*vt (0 during a soft stop) by
+//                  at most a_max; a_actual := change of V; RAMP/SOFT: v_target := vt (C51)
+//   V := 0         when the hard stop holds or (RAMP/SOFT, x_actual = x_target,
+//                  |V|>>8 <= v_min) (C52); wins over the ramp tick (C3)
+//   pulse tick     (pulse_tick) acc += |V|>>8 (0 if V was zeroed this cycle); a carry is one
+//                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
+//   latch (C62)    lp & V != 0 & selected switch changed: x_latched := x_actual, lp := 0
+// µC writes (we, widx, wdata; any run level) take priority over all of these (C3).
+`default_nettype none
+
+module tmc429_ramp #(
+    parameter HAS_USTEP = 1       // IDX 15 ustep_count writable (TMC429, TMC4210)
+) (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire        run,        // 0 while powered down (C66)
+    input  wire        ramp_tick,  // phase 30 of a ramp frame of this motor (C40, C41)
+    input  wire        pulse_tick, // phase 31 of a pulse frame of this motor
+    // registers of the motor (old state)
+    input  wire [1:0]  rm,
+    input  wire [23:0] x_target,
+    input  wire [10:0] v_min,
+    input  wire [10:0] a_max,
+    input  wire [3:0]  ref_conf,   // REF_RnL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L
+    input  wire [2:0]  usrs,
+    input  wire [11:0] dx_ref_tolerance,
+    input  wire [11:0] vt,         // committed target velocity (tmc429_vtarget)
+    input  wire        sw_l,       // left and right switch (C60)
+    input  wire        sw_r,
+    // µC write to this motor (executed in this edge)
+    input  wire        we,
+    input  wire [3:0]  widx,
+    input  wire [23:0] wdata,
+    // state
+    output reg  [23:0] x_actual,
+    output reg  [19:0] v,          // internal velocity V, 1/256 units, two's complement
+    output reg  [11:0] v_target,
+    output reg  [11:0] a_actual,
+    output reg  [7:0]  ustep,
+    output reg  [10:0] acc,        // pulse accumulator
+    output reg         step,       // a step was made in the last edge
+    output reg         dir,        // direction of the last step (1 = negative)
+    output reg  [23:0] x_latched,
+    output reg         lp,
+    // conditions of the old state
+    output wire        xeqt,       // x_actual == x_target
+    output wire        stop,       // switch stop condition (STOP interrupt, C63)
+    output wire        tol_ok,     // |x_actual| < dx_ref_tolerance
+    output wire [11:0] v_actual    // readout sign(V) * (|V| >> 8) (C42)
+);
+    reg ref_prev;
+
+    // ---- velocity magnitude, readout ---------------------------------------------------
+    wire        v_neg  = v[19];
+    wire        v_zero = v == 20'd0;
+    wire        v_lo0  = v[7:0] == 8'd0;
+    // |V| >> 8: for V < 0, (~V + 1) >> 8 = ~V[18:8] + (V[7:0] == 0)
+    wire [10:0] v_mag  = (v[18:8] ^ {11{v_neg}}) + {10'd0, v_neg & v_lo0};
+    // sign(V) * (|V| >> 8): V >> 8 rounded toward 0
+    assign v_actual = v[19:8] + {11'd0, v_neg & ~v_lo0};
+
+    // ---- tolerance window, switch stop (C61) ----------------------------------------------
+    wire        x_hi0 = x_actual[23:12] == 12'h000;
+    wire        x_hi1 = x_actual[23:12] == 12'hFFF;
+    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096
+    /* verilator lint_off UNUSEDSIGNAL */     // only the borrow of the difference is used
+    wire [12:0] x_dif = {1'b0, x_actual[11:0]} - {1'b0, dx_ref_tolerance};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [12:0] x_sum = {1'b0, x_actual[11:0]} + {1'b0, dx_ref_tolerance};
+    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_sum[12] & (x_sum[11:0] != 12'd0));
+
+    wire rnl      = ref_conf[3];
+    wire soft_sw  = ref_conf[2];
+    wire vt_zero  = vt == 12'd0;
+    wire mov_neg  = v_neg | (v_zero & vt[11]);
+    wire mov_pos  = (~v_neg & ~v_zero) | (v_zero & ~vt[11] & ~vt_zero);
+    wire stop_l   = ~ref_conf[0] & sw_l & mov_neg & (rnl | ~tol_ok);
+    wire stop_r   = ~ref_conf[1] & sw_r & mov_pos & (~rnl | ~tol_ok);
+    assign stop   = stop_l | stop_r;
+    wire sel      = rnl ? sw_r : sw_l;
+
+    // ---- stop at target (C52) ------------------------------------------------------------------
+    assign xeqt   = x_actual == x_target;
+    /* verilator lint_off UNUSEDSIGNAL */     // borrow: |V|>>8 > v_min
+    wire [11:0] m_cmp = {1'b0, v_min} - {1'b0, v_mag};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire at_stop  = ~rm[1] & xeqt & ~m_cmp[11];
+    wire zero_v   = at_stop | (stop & ~soft_sw);
+
+    // ---- ramp tick (C51) -------------------------------------------------------------------------
+    // d = T - V; up = V < T; lands on T when |d| <= a_max, else V +- a_max; a_actual = the
+    // change of V. |d| <= a_max needs d in [-2047, 2047]: the top bits of d are all 0 or all 1.
+    wire [11:0] t_hi  = (stop & soft_sw) ? 12'd0 : vt;
+    wire [20:0] d     = {t_hi[11], t_hi, 8'd0} - {v[19], v};
+    wire        up    = ~d[20] & (d != 21'd0);
+    wire        d_lo0 = d[20:11] == 10'h000;
+    wire        d_lo1 = d[20:11] == 10'h3FF;
+    /* verilator lint_off UNUSEDSIGNAL */     // only the carry / sign are used
+    wire [11:0] d_le  = {1'b0, a_max} - {1'b0, d[10:0]};                // d <= a: no borrow
+    wire [11:0] d_ge  = d[11:0] + {1'b0, a_max};                        // d >= -a: sign 0
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire        land  = up ? (d_lo0 & ~d_le[11]) : ((d_lo1 & ~d_ge[11]) | (d == 21'd0));
+    wire [19:0] v_st  = v + (({9'd0, a_max} ^ {20{~up}}) + {19'd0, ~up});   // |V -+ a| < 2^19
+    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : v_st;
+    wire [11:0] a_rmp = v_rmp[11:0] - v[11:0];
+    wire        tick  = ramp_tick & (rm != 2'd3);
+
+    // ---- pulse generator (C53) ----------------------------------------------------------------
+    wire [11:0] p_sum = {1'b0, acc} + {1'b0, zero_v ? 11'd0 : v_mag};
+    wire        p_step = pulse_tick & p_sum[11];
+    reg  [7:0]  inc;                 // 2^(6-usrs), usrs 7 as 6
+    always @(*) begin
+        case (usrs)
+        3'd0: inc = 8'd64;  3'd1: inc = 8'd32;  3'd2: inc = 8'd16;  3'd3: inc = 8'd8;
+        3'd4: inc = 8'd4;   3'd5: inc = 8'd2;   default: inc = 8'd1;
+        endcase
+    end
+    wire [23:0] x_stp = x_actual + {{23{v_neg}}, 1'b1};
+    wire [7:0]  u_stp = ustep + ((inc ^ {8{v_neg}}) + {7'd0, v_neg});
+
+    // ---- µC writes (C3, C23) ------------------------------------------------------------------
+    wire        w_x   = we & (widx == 4'd1);
+    wire        w_vt  = we & (widx == 4'd4);
+    wire        w_va  = we & (widx == 4'd5);
+    wire        w_lp  = we & (widx == 4'd14);
+    wire        w_us  = we & (widx == 4'd15) & (HAS_USTEP != 0);
+    wire [11:0] w_v   = (wdata[11:0] == 12'h800) ? 12'h801 : wdata[11:0];
+
+    always @(posedge clk) begin
+        if (rst) begin
+            x_actual <= 24'd0;  v <= 20'd0;      v_target <= 12'd0;  a_actual <= 12'd0;
+            ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
+            x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
+        end else begin
+            if (run) begin
+                ref_prev <= sel;
+                if (lp & ~v_zero & (sel != ref_prev)) begin
+                    x_latched <= x_actual;
+                    lp <= 1'b0;
+                end
+                if (tick) begin
+                    a_actual <= a_rmp;
+                    if (~rm[1])
+                        v_target <= vt;
+                end
+                if (zero_v)
+                    v <= 20'd0;
+                else if (tick)
+                    v <= v_rmp;
+                step <= p_step;
+                if (pulse_tick)
+                    acc <= p_sum[10:0];
+                if (p_step) begin
+                    x_actual <= x_stp;
+                    ustep <= u_stp;
+                    dir <= v_neg;
+                end
+            end
+            if (w_x)  x_actual <= wdata;
+            if (w_vt) v_target <= wdata[11:0];
+            if (w_va) v <= {w_v, 8'd0};
+            if (w_lp) lp <= 1'b1;
+            if (w_us) ustep <= wdata[7:0];
+        end
+    end
+endmodule
+
+`default_nettype wire

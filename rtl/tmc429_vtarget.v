@@ -1,0 +1,259 @@
+// tmc429_vtarget: the target velocity of the three motors (docs/model-contract.md C41, C50;
+// TMC428 §8.7-§8.10), one time-multiplexed datapath for all motors.
+//
+// Schedule inside the 32-cycle frame (phase p = prescaler[4:0], C41):
+//   p = 7m        snapshot of motor m: dx = x_target - x_actual, rm, pmul, pdiv, v_min,
+//                 v_max, v_target are taken from the old state into the A registers
+//   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE)
+//   p = 7m+2..+6  acc = c * W, W = p_mul << u (10-bit multiplier word, Horner, 2 bits per cycle)
+//   p = 7m+7..+13 B: RAMP_MODE: square root of the radicand (acc << 7) >> pdiv, two result bits
+//                 per cycle (restoring, narrow remainder); SOFT_MODE: (c * p_mul) >> (3+pdiv),
+//                 four bits per cycle shifted out of acc
+//   p = 7m+14     C: clamp to [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign, result
+//                 into vt_next[m]
+//   p = 29        commit: vt[m] := vt_next[m] for all motors (vt is used from phase 30 on)
+// Motor 2's result is written at p = 28. Stages A, B and C work on three motors at once
+// (A on m+1 while B runs m): each stage reads the other's registers from the old state.
+//
+// Square root without a multiplier-wide shifter: with t = pdiv >> 1, e = pdiv & 1 and
+// Z = p_mul * (|dx|-1) * 2^(8-e) = acc * 2^7 (u = 1-e), isqrt(floor(Z / 4^t)) is the
+// restoring square root of Z stopped after result bit t. A result of 2048 or more clamps to
+// v_max, so only 11 result bits matter: for t <= 3 the top 8 bits of Z are skipped (nonzero
+// means "saturated"), and at most 14 steps (7 cycles) remain. An odd step count computes
+// one extra result bit that is dropped ("odd"). SOFT_MODE uses the same B registers to shift
+// (c * p_mul * 2^u) out four bits per cycle; u and "odd" align the last bit with 3 + pdiv.
+`default_nettype none
+
+module tmc429_vtarget #(
+    parameter NMOT = 3            // motors present (TMC4210: 1)
+) (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire        run,       // 0 while powered down (C66)
+    input  wire [4:0]  phase,     // prescaler[4:0]
+    // per-motor registers, motor m in bits [w*(m+1)-1 : w*m]
+    input  wire [5:0]  rm,
+    input  wire [71:0] x_target,
+    input  wire [71:0] x_actual,
+    input  wire [32:0] v_min,
+    input  wire [32:0] v_max,
+    input  wire [35:0] v_target,
+    input  wire [20:0] pmul,      // pmul[6:0] per motor (p_mul = 128 + pmul, C22)
+    input  wire [11:0] pdiv,
+    // committed target velocities (12-bit two's complement), motor m in [12m+11:12m]
+    output wire [35:0] vt
+);
+    // ---- schedule --------------------------------------------------------------------
+    reg        a_snap, a_c, a_mul, b_load, b_run, c_out, commit;
+    reg [1:0]  a_m, c_m;
+    reg [2:0]  b_k;               // B cycle index 0..6
+    always @(*) begin
+        a_snap = 1'b0; a_c = 1'b0; a_mul = 1'b0; b_load = 1'b0; b_run = 1'b0; c_out = 1'b0;
+        commit = 1'b0; a_m = 2'd0; c_m = 2'd0; b_k = 3'd0;
+        case (phase)
+        5'd0:  begin a_snap = 1'b1; a_m = 2'd0; end
+        5'd7:  begin a_snap = 1'b1; a_m = 2'd1; end
+        5'd14: begin a_snap = 1'b1; a_m = 2'd2; end
+        5'd1, 5'd8, 5'd15: a_c = 1'b1;
+        5'd2, 5'd3, 5'd4, 5'd5, 5'd6, 5'd9, 5'd10, 5'd11, 5'd12, 5'd13,
+        5'd16, 5'd17, 5'd18, 5'd19, 5'd20: a_mul = 1'b1;
+        default: ;
+        endcase
+        case (phase)
+        5'd7, 5'd14, 5'd21:  begin b_load = 1'b1; b_run = 1'b1; b_k = 3'd0; end
+        5'd8, 5'd15, 5'd22:  begin b_run = 1'b1; b_k = 3'd1; end
+        5'd9, 5'd16, 5'd23:  begin b_run = 1'b1; b_k = 3'd2; end
+        5'd10, 5'd17, 5'd24: begin b_run = 1'b1; b_k = 3'd3; end
+        5'd11, 5'd18, 5'd25: begin b_run = 1'b1; b_k = 3'd4; end
+        5'd12, 5'd19, 5'd26: begin b_run = 1'b1; b_k = 3'd5; end
+        5'd13, 5'd20, 5'd27: begin b_run = 1'b1; b_k = 3'd6; end
+        default: ;
+        endcase
+        case (phase)
+        5'd14: begin c_out = 1'b1; c_m = 2'd0; end
+        5'd21: begin c_out = 1'b1; c_m = 2'd1; end
+        5'd28: begin c_out = 1'b1; c_m = 2'd2; end
+        5'd29: commit = 1'b1;
+        default: ;
+        endcase
+    end
+
+    // ---- A: snapshot, c, multiply ------------------------------------------------------
+    reg [23:0] sx_t, sx_a;
+    reg [1:0]  s_rm;
+    reg [6:0]  s_pmul;
+    reg [3:0]  s_pdiv;
+    reg [10:0] s_vmin, s_vmax;
+    reg [11:0] s_vtg;
+    always @(*) begin
+        case (a_m)
+        2'd1: begin
+            sx_t = x_target[47:24]; sx_a = x_actual[47:24]; s_rm = rm[3:2];
+            s_pmul = pmul[13:7]; s_pdiv = pdiv[7:4]; s_vmin = v_min[21:11];
+            s_vmax = v_max[21:11]; s_vtg = v_target[23:12];
+        end
+        2'd2: begin
+            sx_t = x_target[71:48]; sx_a = x_actual[71:48]; s_rm = rm[5:4];
+            s_pmul = pmul[20:14]; s_pdiv = pdiv[11:8]; s_vmin = v_min[32:22];
+            s_vmax = v_max[32:22]; s_vtg = v_target[35:24];
+        end
+        default: begin
+            sx_t = x_target[23:0]; sx_a = x_actual[23:0]; s_rm = rm[1:0];
+            s_pmul = pmul[6:0]; s_pdiv = pdiv[3:0]; s_vmin = v_min[10:0];
+            s_vmax = v_max[10:0]; s_vtg = v_target[11:0];
+        end
+        endcase
+    end
+
+    reg [23:0] a_dx;
+    reg [1:0]  a_rm;
+    reg [6:0]  a_pmul;
+    reg [3:0]  a_pdiv;
+    reg [10:0] a_vmin, a_vmax;
+    reg [11:0] a_vtg;
+    reg        a_sgn, a_zero;
+    reg [18:0] a_cv;              // c
+    reg [9:0]  a_w;               // multiplier word, consumed from the top
+    reg [28:0] acc;
+
+    wire        a_soft = a_rm == 2'd1;
+    wire        dx_neg = a_dx[23];
+    // |dx| - 1 (RAMP) or |dx| (SOFT): dx ^ sign plus 0, +1 or -1
+    wire [23:0] c0 = (a_dx ^ {24{dx_neg}})
+                   + (a_soft ? {23'd0, dx_neg} : {24{~dx_neg}});
+    wire        c_big = (c0[23:19] != 5'd0) | (~a_soft & (c0[18:0] == 19'h7FFFF));
+    wire [18:0] c_val = c_big ? {18'h3FFFF, a_soft} : c0[18:0];   // C43: |dx| <= 2^19-1
+    // u: RAMP 1-e; SOFT 2, 1, 0, 0 for pdiv[1:0] = 0..3
+    wire [1:0]  u = a_soft ? (a_pdiv[1] ? 2'd0 : (a_pdiv[0] ? 2'd1 : 2'd2))
+                           : {1'b0, ~a_pdiv[0]};
+    wire [9:0]  w0 = {2'b00, 1'b1, a_pmul} << u;
+    wire [28:0] h1 = {acc[26:0], 2'b00} + (a_w[9] ? {9'd0, a_cv, 1'b0} : 29'd0);
+    wire [28:0] h2 = h1 + (a_w[8] ? {10'd0, a_cv} : 29'd0);
+
+    always @(posedge clk) begin
+        if (rst) begin
+            a_dx <= 24'd0; a_rm <= 2'd0; a_pmul <= 7'd0; a_pdiv <= 4'd0;
+            a_vmin <= 11'd0; a_vmax <= 11'd0; a_vtg <= 12'd0;
+            a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 19'd0; a_w <= 10'd0; acc <= 29'd0;
+        end else if (run) begin
+            if (a_snap) begin
+                a_dx <= sx_t - sx_a;     // C43: 24-bit wrap-around
+                a_rm <= s_rm; a_pmul <= s_pmul; a_pdiv <= s_pdiv;
+                a_vmin <= s_vmin; a_vmax <= s_vmax; a_vtg <= s_vtg;
+            end
+            if (a_c) begin
+                a_sgn  <= dx_neg;
+                a_zero <= a_dx == 24'd0;
+                a_cv   <= c_val;
+                a_w    <= w0;
+                acc    <= 29'd0;
+            end
+            if (a_mul) begin
+                acc <= h2;
+                a_w <= {a_w[7:0], 2'b00};
+            end
+        end
+    end
+
+    // ---- B: square root / shift ------------------------------------------------------------
+    reg [1:0]  b_rm;
+    reg [10:0] b_vmin, b_vmax;
+    reg [11:0] b_vtg;
+    reg        b_sgn, b_zero, b_odd;
+    reg [2:0]  b_ne;
+    reg [27:0] sr;
+    reg [12:0] rem;
+    reg [11:0] y;
+    reg        sticky;
+
+    // control of the motor in A (taken at the load cycle)
+    wire       l_soft = a_rm == 2'd1;
+    wire       l_skip = ~l_soft & ~a_pdiv[3];
+    wire       l_odd  = l_soft ? (a_pdiv[1] & a_pdiv[0]) : a_pdiv[1];
+    wire [2:0] l_ne   = l_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : (a_pdiv[2] ? 3'd6 : 3'd7);
+
+    wire        m_soft = b_load ? l_soft : (b_rm == 2'd1);
+    wire [27:0] src    = b_load ? (l_skip ? {acc[20:0], 7'd0} : acc[28:1]) : sr;
+    wire [12:0] rem_in = b_load ? 13'd0 : rem;
+    wire [11:0] y_in   = b_load ? 12'd0 : y;
+    wire        st_in  = b_load ? (l_skip & (acc[27:21] != 7'd0)) : sticky;
+    wire        step   = b_load | (b_k < b_ne);
+
+    // two restoring square-root steps; the remainder stays below 2^13 unless the result
+    // saturates (sticky), so bits 14:13 of a difference that is kept are 0
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [15:0] t1   = {1'b0, rem_in, src[27:26]} - {2'b00, y_in, 2'b01};
+    wire        ge1  = ~t1[15];
+    wire [12:0] r1   = ge1 ? t1[12:0] : {rem_in[10:0], src[27:26]};
+    wire [11:0] y1   = {y_in[10:0], ge1};
+    wire [15:0] t2   = {1'b0, r1, src[25:24]} - {2'b00, y1, 2'b01};
+    wire        ge2  = ~t2[15];
+    wire [12:0] r2   = ge2 ? t2[12:0] : {r1[10:0], src[25:24]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [11:0] y2   = {y1[10:0], ge2};
+    wire        st_q = st_in | y_in[11] | y_in[10];
+    // SOFT_MODE: four bits shifted into y
+    wire [11:0] y_p  = {y_in[7:0], src[27:24]};
+    wire        st_p = st_in | (y_in[11:8] != 4'd0);
+
+    always @(posedge clk) begin
+        if (rst) begin
+            b_rm <= 2'd0; b_vmin <= 11'd0; b_vmax <= 11'd0; b_vtg <= 12'd0;
+            b_sgn <= 1'b0; b_zero <= 1'b1; b_odd <= 1'b0; b_ne <= 3'd0;
+            sr <= 28'd0; rem <= 13'd0; y <= 12'd0; sticky <= 1'b0;
+        end else if (run) begin
+            if (b_load) begin
+                b_rm <= a_rm; b_vmin <= a_vmin; b_vmax <= a_vmax; b_vtg <= a_vtg;
+                b_sgn <= a_sgn; b_zero <= a_zero; b_odd <= l_odd; b_ne <= l_ne;
+            end
+            if (b_run & step) begin
+                sr <= {src[23:0], 4'd0};
+                if (m_soft) begin
+                    y <= y_p;
+                    sticky <= st_p;
+                end else begin
+                    rem <= r2;
+                    y <= y2;
+                    sticky <= st_q;
+                end
+            end
+        end
+    end
+
+    // ---- C: clamp, sign -------------------------------------------------------------------
+    wire        c_vel  = b_rm == 2'd2;
+    wire [11:0] vabs   = b_vtg[11] ? (~b_vtg + 12'd1) : b_vtg;   // -2048 -> 2048 (>= v_max)
+    wire        y_sat  = sticky | (~b_odd & y[11]);
+    wire [10:0] y_mag  = b_odd ? y[11:1] : y[10:0];
+    wire [11:0] mag    = c_vel ? vabs : {y_sat, y_mag};
+    wire [10:0] lo     = c_vel ? 11'd0 : b_vmin;
+    wire [11:0] m2     = (mag < {1'b0, lo}) ? {1'b0, lo} : mag;
+    wire [10:0] m3     = (m2 > {1'b0, b_vmax}) ? b_vmax : m2[10:0];
+    wire        c_neg  = c_vel ? b_vtg[11] : b_sgn;
+    wire        c_none = (b_rm == 2'd3) | (~b_rm[1] & b_zero);
+    wire [11:0] m3s    = {1'b0, m3};
+    wire [11:0] res    = c_none ? 12'd0 : (c_neg ? (~m3s + 12'd1) : m3s);
+
+    reg [35:0] vt_next;           // motor m in [12m+11:12m]
+    reg [35:0] vt_r;
+    wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
+    always @(posedge clk) begin
+        if (rst) begin
+            vt_next <= 36'd0;
+            vt_r <= 36'd0;
+        end else if (run) begin
+            if (c_out)
+                case (c_m)
+                2'd0:    vt_next[11:0] <= res;
+                2'd1:    vt_next[23:12] <= res;
+                default: vt_next[35:24] <= res;
+                endcase
+            if (commit)
+                vt_r <= vt_next & present;
+        end
+    end
+
+    assign vt = vt_r;
+endmodule
+
+`default_nettype wire
