@@ -380,6 +380,11 @@ impl Tmc429 {
         if !self.global.pc_m {
             self.global.pc_i = false;
         }
+        // INT changed by something other than the motors (the position compare flag): the
+        // next edge registers it on nINT (C11), so it must not take the fast path.
+        if self.int() != int_old {
+            self.quiet = false;
+        }
         if wake {
             self.power_down = false;
         }
