@@ -25,7 +25,9 @@ module tmc429_motor_regs #(
     output reg  [23:0] x_actual,
     output reg  [11:0] v_actual,  // v_actual register: V = v_actual * 256 (C23)
     output reg  [11:0] v_target,
-    output reg  [7:0]  ustep
+    output reg  [7:0]  ustep,
+    // driver side (C75, C40): {ramp_div, is_agtat, is_aleat, is_v0, a_threshold}
+    output wire [23:0] drv_conf
 );
     reg [10:0] v_min, v_max, a_max, a_threshold;
     reg [2:0]  is_agtat, is_aleat, is_v0, usrs;
@@ -61,6 +63,7 @@ module tmc429_motor_regs #(
     wire [7:0] w1c     = w_int ? wdata[7:0] : 8'd0;
 
     assign xeqt = x_actual == x_target;
+    assign drv_conf = {ramp_div, is_agtat, is_aleat, is_v0, a_threshold};
     assign irq  = int_flags != 8'd0;
 
     always @(posedge clk) begin
