@@ -43,69 +43,68 @@ module tmc429_ram #(
             written[waddr] <= 1'b1;
     end
 
-    function [11:0] rom;
+    // Power-on contents of word a (C30): TMC429 only, zero otherwise.
+    function [11:0] rom_word;
         input [5:0] a;
         begin
-        rom = 12'h000;
-        if (CHIP == 1) begin
             case (a)
-            6'd0: rom = 12'h151;
-            6'd1: rom = 12'h0C4;
-            6'd2: rom = 12'h182;
-            6'd3: rom = 12'h351;
-            6'd4: rom = 12'h2CC;
-            6'd5: rom = 12'hB8A;
-            6'd6: rom = 12'h151;
-            6'd7: rom = 12'h0C4;
-            6'd8: rom = 12'h182;
-            6'd9: rom = 12'h351;
-            6'd10: rom = 12'h2CC;
-            6'd11: rom = 12'hB8A;
-            6'd12: rom = 12'h151;
-            6'd13: rom = 12'h0C4;
-            6'd14: rom = 12'h182;
-            6'd15: rom = 12'h351;
-            6'd16: rom = 12'h2CC;
-            6'd17: rom = 12'hB8A;
-            6'd32: rom = 12'h080;
-            6'd33: rom = 12'h143;
-            6'd34: rom = 12'h206;
-            6'd35: rom = 12'h2C9;
-            6'd36: rom = 12'h38C;
-            6'd37: rom = 12'h450;
-            6'd38: rom = 12'h513;
-            6'd39: rom = 12'h5D6;
-            6'd40: rom = 12'h698;
-            6'd41: rom = 12'h75B;
-            6'd42: rom = 12'h81E;
-            6'd43: rom = 12'h8A1;
-            6'd44: rom = 12'h964;
-            6'd45: rom = 12'h9E6;
-            6'd46: rom = 12'hAA9;
-            6'd47: rom = 12'hB2B;
-            6'd48: rom = 12'hBAD;
-            6'd49: rom = 12'hC2F;
-            6'd50: rom = 12'hCB1;
-            6'd51: rom = 12'hD33;
-            6'd52: rom = 12'hDB5;
-            6'd53: rom = 12'hE37;
-            6'd54: rom = 12'hE78;
-            6'd55: rom = 12'hEFA;
-            6'd56: rom = 12'hF3B;
-            6'd57: rom = 12'hF7C;
-            6'd58: rom = 12'hFBD;
-            6'd59: rom = 12'hFBE;
-            6'd60: rom = 12'hFFF;
-            6'd61: rom = 12'hFFF;
-            6'd62: rom = 12'hFFF;
-            6'd63: rom = 12'hFFF;
-            default: rom = 12'h000;
+            6'd0: rom_word = 12'h151;
+            6'd1: rom_word = 12'h0C4;
+            6'd2: rom_word = 12'h182;
+            6'd3: rom_word = 12'h351;
+            6'd4: rom_word = 12'h2CC;
+            6'd5: rom_word = 12'hB8A;
+            6'd6: rom_word = 12'h151;
+            6'd7: rom_word = 12'h0C4;
+            6'd8: rom_word = 12'h182;
+            6'd9: rom_word = 12'h351;
+            6'd10: rom_word = 12'h2CC;
+            6'd11: rom_word = 12'hB8A;
+            6'd12: rom_word = 12'h151;
+            6'd13: rom_word = 12'h0C4;
+            6'd14: rom_word = 12'h182;
+            6'd15: rom_word = 12'h351;
+            6'd16: rom_word = 12'h2CC;
+            6'd17: rom_word = 12'hB8A;
+            6'd32: rom_word = 12'h080;
+            6'd33: rom_word = 12'h143;
+            6'd34: rom_word = 12'h206;
+            6'd35: rom_word = 12'h2C9;
+            6'd36: rom_word = 12'h38C;
+            6'd37: rom_word = 12'h450;
+            6'd38: rom_word = 12'h513;
+            6'd39: rom_word = 12'h5D6;
+            6'd40: rom_word = 12'h698;
+            6'd41: rom_word = 12'h75B;
+            6'd42: rom_word = 12'h81E;
+            6'd43: rom_word = 12'h8A1;
+            6'd44: rom_word = 12'h964;
+            6'd45: rom_word = 12'h9E6;
+            6'd46: rom_word = 12'hAA9;
+            6'd47: rom_word = 12'hB2B;
+            6'd48: rom_word = 12'hBAD;
+            6'd49: rom_word = 12'hC2F;
+            6'd50: rom_word = 12'hCB1;
+            6'd51: rom_word = 12'hD33;
+            6'd52: rom_word = 12'hDB5;
+            6'd53: rom_word = 12'hE37;
+            6'd54: rom_word = 12'hE78;
+            6'd55: rom_word = 12'hEFA;
+            6'd56: rom_word = 12'hF3B;
+            6'd57: rom_word = 12'hF7C;
+            6'd58: rom_word = 12'hFBD;
+            6'd59: rom_word = 12'hFBE;
+            6'd60: rom_word = 12'hFFF;
+            6'd61: rom_word = 12'hFFF;
+            6'd62: rom_word = 12'hFFF;
+            6'd63: rom_word = 12'hFFF;
+            default: rom_word = 12'h000;
             endcase
-        end
         end
     endfunction
 
-    assign rdata = written[raddr] ? mem[raddr] : rom(raddr);
+    wire [11:0] rom = (CHIP == 1) ? rom_word(raddr) : 12'h000;
+    assign rdata = written[raddr] ? mem[raddr] : rom;
 
     // ---- port 2 -----------------------------------------------------------------------
     reg [11:0] q2;
@@ -124,7 +123,7 @@ module tmc429_ram #(
             a2 <= raddr2;
         end
     end
-    wire [11:0] word2 = w2 ? q2 : rom(a2[6:1]);
+    wire [11:0] word2 = w2 ? q2 : ((CHIP == 1) ? rom_word(a2[6:1]) : 12'h000);
     assign rdata2 = a2[0] ? word2[11:6] : word2[5:0];
 endmodule
 

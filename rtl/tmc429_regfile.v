@@ -94,28 +94,28 @@ module tmc429_regfile #(
         .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
 
     // ---- motors -----------------------------------------------------------------------
-    wire [23:0] m_rdata [0:2];
+    wire [23:0] m_rdata0, m_rdata1, m_rdata2;
     wire [2:0]  xeqt, irq;
     wire        m_present1 = (CHIP != 2);
 
     tmc429_motor_regs #(.CHIP(CHIP)) u_m0 (
         .clk(clk), .rst(rst), .run(run),
         .we(wr & (a7[6:4] == 3'b000)), .widx(a7[3:0]), .wdata(wdata),
-        .ridx(rd_addr[3:0]), .rdata(m_rdata[0]),
+        .ridx(rd_addr[3:0]), .rdata(m_rdata0),
         .sw_l(sw_l[0]), .sw_r(sw_r[0]), .xeqt(xeqt[0]), .irq(irq[0]),
         .x_target(m0_x_target), .x_actual(m0_x_actual), .v_actual(m0_v_actual),
         .v_target(m0_v_target), .ustep(m0_ustep), .drv_conf(m0_drv_conf));
     tmc429_motor_regs #(.CHIP(CHIP)) u_m1 (
         .clk(clk), .rst(rst), .run(run),
         .we(wr & m_present1 & (a7[6:4] == 3'b001)), .widx(a7[3:0]), .wdata(wdata),
-        .ridx(rd_addr[3:0]), .rdata(m_rdata[1]),
+        .ridx(rd_addr[3:0]), .rdata(m_rdata1),
         .sw_l(sw_l[1]), .sw_r(sw_r[1]), .xeqt(xeqt[1]), .irq(irq[1]),
         .x_target(m1_x_target), .x_actual(m1_x_actual), .v_actual(m1_v_actual),
         .v_target(m1_v_target), .ustep(m1_ustep), .drv_conf(m1_drv_conf));
     tmc429_motor_regs #(.CHIP(CHIP)) u_m2 (
         .clk(clk), .rst(rst), .run(run),
         .we(wr & m_present1 & (a7[6:4] == 3'b010)), .widx(a7[3:0]), .wdata(wdata),
-        .ridx(rd_addr[3:0]), .rdata(m_rdata[2]),
+        .ridx(rd_addr[3:0]), .rdata(m_rdata2),
         .sw_l(sw_l[2]), .sw_r(sw_r[2]), .xeqt(xeqt[2]), .irq(irq[2]),
         .x_target(m2_x_target), .x_actual(m2_x_actual), .v_actual(m2_v_actual),
         .v_target(m2_v_target), .ustep(m2_ustep), .drv_conf(m2_drv_conf));
@@ -240,11 +240,11 @@ module tmc429_regfile #(
         if (rd_addr[6]) begin
             rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
         end else if (rd_addr[5:4] == 2'b00) begin
-            rd_data = m_rdata[0];
+            rd_data = m_rdata0;
         end else if (rd_addr[5:4] == 2'b01) begin
-            rd_data = m_present1 ? m_rdata[1] : 24'd0;
+            rd_data = m_present1 ? m_rdata1 : 24'd0;
         end else if (rd_addr[5:4] == 2'b10) begin
-            rd_data = m_present1 ? m_rdata[2] : 24'd0;
+            rd_data = m_present1 ? m_rdata2 : 24'd0;
         end else begin
             case (rd_addr[3:0])
             4'd0:  rd_data = HAS_CHAIN ? chain_readback[23:0] : 24'd0;    // datagram_low_word

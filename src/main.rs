@@ -23,6 +23,8 @@ enum Command {
     Regmap(cmd::regmap::Args),
     /// Run the golden model and the Verilated RTL in lock-step on random stimulus.
     Cosim(cmd::cosim::Args),
+    /// Export test vectors from the golden model (pin level and transaction level).
+    Vectors(cmd::vectors::Args),
     /// TMCL module layer: serve a virtual TMCM-3110, assemble and run TMCL programs.
     Tmcl(cmd::tmcl::Args),
 }
@@ -50,6 +52,7 @@ fn main() -> ExitCode {
         Command::Regmap(a) => cmd::regmap::run(a),
         Command::Cosim(a) => cmd::cosim::run(a),
         Command::Tmcl(a) => cmd::tmcl::run(a),
+        Command::Vectors(a) => cmd::vectors::run(a),
     };
     match res {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,

@@ -352,6 +352,19 @@ impl Chain {
         self.cupd = cupd;
     }
 
+    /// The signal vectors (C73) of the snapshot taken at the last datagram start, with the
+    /// LUT of `ram`: what the datagram carries when the LUT does not change while it is sent
+    /// (the chain itself reads the LUT bit by bit, C80).
+    pub fn snapshot_signals(&self, ram: &[u8; 128]) -> [u32; 3] {
+        let mut v = [0; 3];
+        for (m, s) in v.iter_mut().enumerate() {
+            let dir = (self.snap_dir >> m) & 1 != 0;
+            let step = (self.snap_step >> m) & 1 != 0;
+            *s = microstep::signals(ram, self.snap_w[m], self.snap_i_scale[m], dir, step, self.snap_pol);
+        }
+        v
+    }
+
     /// cw as read back and in CDGW: waiting or being sent.
     #[inline]
     pub fn cw(&self, g: &Global) -> bool {

@@ -278,6 +278,16 @@ impl Tmc429 {
         p
     }
 
+    /// The µC SPI slave's ports in the current state ([`spi_slave::SpiPorts`]): the slave's
+    /// outputs, and the status byte and read data the register file presents to it for the next
+    /// edge. This is the boundary of `rtl/tmc429_spi_slave.v` (test vectors, docs/vectors.md).
+    pub fn spi_ports(&self) -> spi_slave::SpiPorts {
+        let mut p = self.spi.ports(&self.sync);
+        p.status = self.status();
+        p.rd_data = self.read_register(p.rd_addr) & 0xFF_FFFF;
+        p
+    }
+
     /// One rising edge of CLK (C1).
     #[inline]
     pub fn tick(&mut self, inp: &Inputs) -> Outputs {

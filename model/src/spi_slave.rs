@@ -81,3 +81,45 @@ impl SpiSlave {
         self.shift_out >> 31 != 0
     }
 }
+
+/// The µC SPI slave's ports as `rtl/tmc429_spi_slave.v` has them, for one CLK edge (the unit
+/// boundary of the test vectors, docs/vectors.md). Inputs besides the three pins: `status` and
+/// `rd_data`, driven by the register file from the old state. Outputs: combinational functions
+/// of the slave's registers (the synchronizer flops, the shift registers and the bit counter).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SpiPorts {
+    /// Status byte the register file presents (loaded at `frame_start`, C10).
+    pub status: u8,
+    /// Read data of `rd_addr` the register file presents (loaded after the 8th bit of a read).
+    pub rd_data: u32,
+    /// Address of the frame being received: bits 7..1 of the input register after the next shift.
+    pub rd_addr: u8,
+    /// Synchronized nSCS_C falling edge (acted on at the next CLK edge).
+    pub frame_start: bool,
+    /// Synchronized nSCS_C rising edge after exactly 32 bits: execute `cmd` (C12).
+    pub exec: bool,
+    /// Input shift register.
+    pub cmd: u32,
+    /// The output register drives the data pin (the history flop of nSCS_C is low).
+    pub active: bool,
+    /// Current data bit: bit 31 of the output register.
+    pub sdo: bool,
+}
+
+impl SpiSlave {
+    /// The outputs of the slave's ports for the register state `self` and the synchronizer
+    /// state `s`; `status` and `rd_data` are left 0 (the register file fills them in).
+    pub fn ports(&self, s: &SyncBank) -> SpiPorts {
+        let in_next = (self.shift_in << 1) | s.level(bit::SDI_C) as u32;
+        SpiPorts {
+            status: 0,
+            rd_data: 0,
+            rd_addr: ((in_next >> 1) & 0x7F) as u8,
+            frame_start: s.fell(bit::NSCS_C),
+            exec: s.rose(bit::NSCS_C) && self.count == 32,
+            cmd: self.shift_in,
+            active: (s.s3 >> bit::NSCS_C) & 1 == 0,
+            sdo: self.sdo(),
+        }
+    }
+}

@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use tmc429_testbench::{run as cosim_run, Config, Variant};
+use tmc429_testbench::stimulus::Profile;
 
 use super::common::ChipArgs;
 use crate::{Outcome, UserError};
@@ -22,6 +23,12 @@ pub struct Args {
     /// Without this option a mismatch writes cosim-CHIP-seedS.vcd in the current directory.
     #[arg(long, value_name = "FILE")]
     pub vcd: Option<PathBuf>,
+    /// Stimulus profile: `drivers` (motors held; driver-chain datagrams, covers, continuous
+    /// update, refmux, polarities, Step/Dir configurations), `registers` (motors held, no
+    /// driver-chain traffic), `motion` (moves in every mode, switch events, driver-chain and
+    /// Step/Dir configurations) or `full` (any register and RAM word with any data).
+    #[arg(long, default_value = "drivers", value_parser = ["drivers", "registers", "motion", "full"])]
+    pub profile: String,
     /// Print the functional coverage table and the bins never hit.
     #[arg(long)]
     pub coverage: bool,
@@ -35,6 +42,7 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
     let chip = a.chip.chip;
     let mut cfg = Config::new(chip, a.seed, a.cycles);
     cfg.fclk = a.chip.fclk();
+    cfg.profile = Profile::parse(&a.profile).expect("clap restricts --profile to the known names");
     if a.plant_bug.is_some() {
         if chip != tmc429_model::Chip::Tmc429 {
             return Err(UserError(format!(

@@ -4,3 +4,4 @@ pub mod cosim;
 pub mod regmap;
 pub mod spi;
 pub mod tmcl;
+pub mod vectors;

@@ -306,6 +306,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         let mp = model.probes();
         let rp = rtl.probes();
         cov.cycle(&mo, &mp);
+        cov.model(&model, &mp);
         if cfg.profile == Profile::Drivers {
             cov.drivers(chip, &mo, &mp, &model);
         }

@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 use tmc429_model::regmap::{self, Addr};
-use tmc429_model::{Chip, Outputs, Probes, Tmc429};
+use tmc429_model::{chain, current, motor, stepdir, Chip, Outputs, Probes, Tmc429};
 
 use crate::stimulus::{Frame, PinLevels, Profile, MIN_HALF};
 
@@ -42,6 +42,69 @@ pub struct Coverage {
     last_mux: u8,
     /// The datagram under way carries the cover datagram.
     cover_seen: bool,
+    /// Motion-profile observations of the previous cycle (see [`Coverage::model`]).
+    motion: Option<MotionSeen>,
+}
+
+/// What [`Coverage::model`] remembers from the previous cycle.
+#[derive(Clone, Copy, Debug, Default)]
+struct MotionSeen {
+    rm: [u8; 3],
+    x_target: [u32; 3],
+    /// V ≠ 0 seen since the last stop in RAMP or SOFT mode.
+    moved: [bool; 3],
+    stop: [bool; 3],
+    lp: [bool; 3],
+    chain_state: u8,
+    mux: u8,
+    sd_dir: [bool; 3],
+    cupd: [u16; 3],
+}
+
+/// Ramp mode names ([428] Table 8-3).
+pub const MODE_NAMES: [&str; 4] = ["RAMP_MODE", "SOFT_MODE", "VELOCITY_MODE", "HOLD_MODE"];
+
+/// The bins of the motion profile (the motion core and the driver side).
+pub fn motion_bins(chip: Chip) -> Vec<String> {
+    let mut v: Vec<String> = Vec::new();
+    for m in ["RAMP_MODE", "SOFT_MODE"] {
+        v.push(format!("{m}: move ends at x_target"));
+    }
+    v.push("VELOCITY_MODE: v_actual reaches v_target".into());
+    v.push("HOLD_MODE: moving at a written v_actual".into());
+    v.push("|v_actual| = 2047".into());
+    v.push("mode change during motion".into());
+    v.push("x_target change during motion".into());
+    v.push("switch stop, hard".into());
+    v.push("switch stop, soft".into());
+    v.push("latch on a rising switch edge".into());
+    v.push("latch on a falling switch edge".into());
+    for u in 0..8 {
+        v.push(format!("step with usrs {u}"));
+    }
+    v.push("step negative".into());
+    v.push("step positive".into());
+    if chip != Chip::Tmc4210 {
+        for n in ["is_aleat", "is_agtat", "is_v0"] {
+            v.push(format!("current scale {n} selected"));
+        }
+        for n in [
+            "datagram sent",
+            "datagram with an NxM gap",
+            "cover datagram sent",
+            "continuous update request",
+            "datagram with individual chip selects",
+            "refmux: switches sampled",
+        ] {
+            v.push(n.into());
+        }
+    }
+    if chip != Chip::Tmc428 {
+        for n in ["Step/Dir: step pulse", "Step/Dir: step_half toggle", "Step/Dir: direction change"] {
+            v.push(n.into());
+        }
+    }
+    v
 }
 
 /// Driver-side bins of [`Profile::Drivers`] (SPI chips: TMC428, TMC429).
@@ -113,8 +176,8 @@ impl Coverage {
             names.push(n.into());
         }
         for (k, f) in FLAG_NAMES.iter().enumerate() {
-            // STOP needs a moving motor: not in the register and driver profiles
-            if k == 3 && profile != Profile::Full {
+            // STOP needs a moving motor: only in the motion and full profiles
+            if k == 3 && matches!(profile, Profile::Registers | Profile::Drivers) {
                 continue;
             }
             names.push(format!("interrupt flag {f} set"));
@@ -159,9 +222,14 @@ impl Coverage {
                 names.push("Step/Dir mode: STEP/DIR pins configured".into());
             }
         }
+        let motion = profile == Profile::Motion;
+        if motion {
+            names.extend(motion_bins(chip));
+        }
         Coverage {
             bins: names.into_iter().map(|n| (n, 0)).collect(),
             last_power_down: false,
+            motion: motion.then(MotionSeen::default),
             ..Coverage::default()
         }
     }
@@ -375,6 +443,127 @@ impl Coverage {
         if chip == Chip::Tmc4210 && g.ifconf & 0x20 != 0 {
             self.hit("Step/Dir mode: STEP/DIR pins configured");
         }
+    }
+
+    /// Motion-profile bins, from the model's state after each tick (a few loads per cycle; the
+    /// per-motor mode checks run once per 32-cycle frame, after the pulse phase).
+    #[inline]
+    pub fn model(&mut self, t: &Tmc429, p: &Probes) {
+        let Some(mut seen) = self.motion else { return };
+        let chip = t.chip();
+        let n = t.motor_count();
+        let g = t.global();
+        for i in 0..n {
+            let m = t.motor(i);
+            let pm = &p.motor[i];
+            if pm.step != 0 {
+                self.hit(&format!("step with usrs {}", m.usrs));
+                self.hit(if pm.dir != 0 { "step negative" } else { "step positive" });
+            }
+            let stop = m.cond_prev & motor::INT_STOP != 0;
+            if stop && !seen.stop[i] {
+                self.hit(if m.ref_conf & motor::SOFT_STOP != 0 { "switch stop, soft" } else { "switch stop, hard" });
+            }
+            seen.stop[i] = stop;
+            if seen.lp[i] && !m.lp {
+                self.hit(if m.ref_prev { "latch on a rising switch edge" } else { "latch on a falling switch edge" });
+            }
+            seen.lp[i] = m.lp;
+        }
+        if chip != Chip::Tmc4210 {
+            let c = t.chain();
+            if c.state != seen.chain_state {
+                match c.state {
+                    chain::SETUP => {
+                        self.hit("datagram sent");
+                        if c.cover_busy {
+                            self.hit("cover datagram sent");
+                        }
+                        if g.gconf & regmap::f::CS_COM_IND.put(1) != 0 {
+                            self.hit("datagram with individual chip selects");
+                        }
+                    }
+                    chain::GAP => self.hit("datagram with an NxM gap"),
+                    _ => {}
+                }
+                seen.chain_state = c.state;
+            }
+            for i in 0..3 {
+                let k = c.cupd[i];
+                if k == 0 && seen.cupd[i] == chain::CUPD_RAMP_TICKS - 1 {
+                    self.hit("continuous update request");
+                }
+                seen.cupd[i] = k;
+            }
+            if g.mux_switches != seen.mux {
+                self.hit("refmux: switches sampled");
+                seen.mux = g.mux_switches;
+            }
+        }
+        if chip != Chip::Tmc428 && g.ifconf & regmap::f::EN_SD.put(1) != 0 {
+            let sd = t.step_dir();
+            for i in 0..n {
+                if sd.dir[i] != seen.sd_dir[i] {
+                    self.hit("Step/Dir: direction change");
+                    seen.sd_dir[i] = sd.dir[i];
+                }
+                if sd.state[i] == stepdir::PULSE && sd.cnt[i] > 0 {
+                    self.hit(if g.ifconf & regmap::f::STEP_HALF.put(1) != 0 {
+                        "Step/Dir: step_half toggle"
+                    } else {
+                        "Step/Dir: step pulse"
+                    });
+                }
+            }
+        }
+        if p.prescaler & 31 == 0 {
+            for i in 0..n {
+                let m = t.motor(i);
+                let v_act = m.v_actual();
+                if v_act.unsigned_abs() == 2047 {
+                    self.hit("|v_actual| = 2047");
+                }
+                if m.v != 0 && m.rm != seen.rm[i] {
+                    self.hit("mode change during motion");
+                }
+                if m.v != 0 && m.rm <= motor::SOFT_MODE && m.x_target != seen.x_target[i] {
+                    self.hit("x_target change during motion");
+                }
+                match m.rm {
+                    motor::RAMP_MODE | motor::SOFT_MODE => {
+                        if m.v != 0 {
+                            seen.moved[i] = true;
+                        } else if seen.moved[i] && m.x_actual == m.x_target {
+                            self.hit(&format!("{}: move ends at x_target", MODE_NAMES[m.rm as usize]));
+                            seen.moved[i] = false;
+                        }
+                    }
+                    motor::VELOCITY_MODE => {
+                        seen.moved[i] = false;
+                        if m.v != 0 && v_act == m.vt {
+                            self.hit("VELOCITY_MODE: v_actual reaches v_target");
+                        }
+                    }
+                    _ => {
+                        seen.moved[i] = false;
+                        if m.v != 0 {
+                            self.hit("HOLD_MODE: moving at a written v_actual");
+                        }
+                    }
+                }
+                seen.rm[i] = m.rm;
+                seen.x_target[i] = m.x_target;
+                if chip != Chip::Tmc4210 {
+                    let name = match t.current_scale(i).sel {
+                        current::SEL_AGTAT => "current scale is_agtat selected",
+                        current::SEL_V0 => "current scale is_v0 selected",
+                        _ => "current scale is_aleat selected",
+                    };
+                    self.hit(name);
+                }
+            }
+        }
+        self.motion = Some(seen);
     }
 
     /// A pin-change transaction.

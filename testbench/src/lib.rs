@@ -6,13 +6,16 @@
 //! - [`stimulus`]: transaction-level stimulus (proptest strategies, seeded stream, pin driver);
 //! - [`coverage`]: functional coverage bins;
 //! - [`trace`]: the side-by-side VCD;
-//! - [`cosim`]: the lock-step run and its report.
+//! - [`cosim`]: the lock-step run and its report;
+//! - [`vectors`]: test vectors from the golden model (docs/vectors.md).
 pub mod cosim;
+mod motion_stim;
 pub mod coverage;
 pub mod rtl;
 pub mod signals;
 pub mod stimulus;
 pub mod trace;
+pub mod vectors;
 
 pub use cosim::{run, Config, Mismatch, Outcome};
 pub use rtl::{Rtl, Variant};

@@ -107,6 +107,31 @@ pub enum Profile {
     /// polarities, csCommonIndividual, cover datagrams and the Step/Dir bits of
     /// if_configuration (en_sd, step_half, inv_stp, inv_dir).
     Drivers,
+    /// Everything moves (testbench/src/motion_stim.rs): moves in all four ramp modes with valid
+    /// and boundary parameters, target and mode changes during motion, reference searches with
+    /// switch events and latching, current scaling, driver-chain configurations, cover
+    /// datagrams, continuous update, refmux, Step/Dir — mixed with the traffic of `Full`.
+    Motion,
+}
+
+impl Profile {
+    pub fn name(self) -> &'static str {
+        match self {
+            Profile::Full => "full",
+            Profile::Registers => "registers",
+            Profile::Drivers => "drivers",
+            Profile::Motion => "motion",
+        }
+    }
+    pub fn parse(s: &str) -> Option<Profile> {
+        match s {
+            "full" => Some(Profile::Full),
+            "registers" => Some(Profile::Registers),
+            "drivers" => Some(Profile::Drivers),
+            "motion" => Some(Profile::Motion),
+            _ => None,
+        }
+    }
 }
 
 /// Motors addressable on a chip (TMC4210: one axis, C21).
@@ -116,7 +141,7 @@ pub fn motors(chip: Chip) -> usize {
 
 /// Adjusts a frame to a profile (see [`Profile::Registers`], [`Profile::Drivers`]).
 pub fn sanitize(profile: Profile, f: &mut Frame) {
-    if profile == Profile::Full || f.is_read() {
+    if !matches!(profile, Profile::Registers | Profile::Drivers) || f.is_read() {
         return;
     }
     if profile == Profile::Drivers {
@@ -287,7 +312,7 @@ pub fn driver_sequence(chip: Chip, pick: &mut dyn FnMut(u32) -> u32) -> Vec<Txn>
 /// Transactions that bring a fresh chip into the state a profile assumes.
 pub fn prologue(chip: Chip, profile: Profile) -> Vec<Txn> {
     match profile {
-        Profile::Full => Vec::new(),
+        Profile::Full | Profile::Motion => Vec::new(),
         Profile::Registers | Profile::Drivers => (0..motors(chip))
             .map(|m| Txn::Frame(Frame::write((m as u8) << 4 | 10, 3)))
             .collect(),
@@ -382,11 +407,13 @@ enum Kind {
 
 /// A reproducible stream of transactions for one chip, from a seed.
 pub struct Stimulus {
-    chip: Chip,
-    profile: Profile,
+    pub(crate) chip: Chip,
+    pub(crate) profile: Profile,
     runner: TestRunner,
-    pending: std::collections::VecDeque<Txn>,
-    levels: PinLevels,
+    pub(crate) pending: std::collections::VecDeque<Txn>,
+    pub(crate) levels: PinLevels,
+    /// Last x_target written per motor by a motion sequence (on-the-fly changes move it).
+    pub(crate) targets: [u32; 3],
 }
 
 impl Stimulus {
@@ -402,6 +429,7 @@ impl Stimulus {
             runner,
             pending: prologue(chip, profile).into(),
             levels: PinLevels { ref_: [false; 3], refr: [true; 3], sdi_s: false },
+            targets: [0; 3],
         }
     }
 
@@ -409,7 +437,7 @@ impl Stimulus {
         self.chip
     }
 
-    fn draw<S: Strategy>(&mut self, s: S) -> S::Value {
+    pub(crate) fn draw<S: Strategy>(&mut self, s: S) -> S::Value {
         s.new_tree(&mut self.runner).expect("strategies of this module never reject").current()
     }
 
@@ -418,6 +446,15 @@ impl Stimulus {
         if let Some(t) = self.pending.pop_front() {
             return t;
         }
+        if self.profile == Profile::Motion {
+            return self.motion_txn();
+        }
+        self.register_txn()
+    }
+
+    /// A transaction of the register profiles: a frame, a pin change, idle time, power down or
+    /// a directed position meeting; with [`Profile::Drivers`] also a [`driver_sequence`].
+    pub(crate) fn register_txn(&mut self) -> Txn {
         let drivers = if self.profile == Profile::Drivers { 12 } else { 0 };
         let kind = self.draw(prop_oneof![
             80 => Just(Kind::Frame),

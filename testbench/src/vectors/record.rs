@@ -1,0 +1,461 @@
+//! Recorders: what one unit's boundary shows at every CLK edge, written as pin-level lines or
+//! as transaction-level CSV rows.
+//!
+//! Cycle numbering (all forms): line 0 of a `.hex` file is the reset edge (`rst` = 1); line k
+//! (k ≥ 1) is the k-th CLK edge after reset, the model's `Tmc429::cycle()` after that edge. The
+//! CSV `cycle` columns use the same numbers.
+
+use std::fmt::Write as _;
+
+use tmc429_model::events::{Event, EventDecoder};
+use tmc429_model::microstep;
+use tmc429_model::motor::sext24;
+use tmc429_model::regmap::{self, Addr};
+use tmc429_model::{chain, script, Chip, Inputs, Outputs, Tmc429, PHASE_RAMP};
+
+use super::files::AtomicFile;
+use super::pins::{input, output, Layout, Meta, PinWriter};
+
+/// One unit boundary in one form.
+pub trait Recorder {
+    /// The reset edge: `chip` is the power-on state after it.
+    fn reset(&mut self, chip: &Tmc429) -> Result<(), String>;
+    /// One CLK edge with the pins `inp`; `chip` and `out` are the state and pins after it.
+    fn edge(&mut self, chip: &Tmc429, inp: &Inputs, out: &Outputs) -> Result<(), String>;
+    /// The finished files, not yet committed.
+    fn finish(self: Box<Self>, meta: &Meta) -> Result<Vec<AtomicFile>, String>;
+}
+
+// ---- chip pins ---------------------------------------------------------------------------
+
+/// Output pins the reference RTL does not drive yet (rtl/README.md: the driver chain and
+/// Step/Dir are not built). Pin-level chip vectors record them; `.meta` lists them as not
+/// compared. Remove a pin here when its RTL lands.
+pub const RTL_PENDING_PINS: &[&str] = &["nscs_s", "sck_s", "sdo_s", "sdi_s_o", "sdi_s_oe", "nscs2", "nscs3"];
+
+/// The pins of `tmc429_top` (rtl/tmc429_top.v), inputs then outputs.
+pub fn chip_layout() -> Layout {
+    Layout::new(vec![
+        input("rst", 1),
+        input("nscs_c", 1),
+        input("sck_c", 1),
+        input("sdi_c", 1),
+        input("sdi_s", 1),
+        input("ref1", 1),
+        input("ref2", 1),
+        input("ref3", 1),
+        input("refr1", 1),
+        input("refr2", 1),
+        input("refr3", 1),
+        output("nint_sdo_c", 1),
+        output("sdoz_c", 1),
+        output("sdoz_c_oe", 1),
+        output("nscs_s", 1),
+        output("sck_s", 1),
+        output("sdo_s", 1),
+        output("sdi_s_o", 1),
+        output("sdi_s_oe", 1),
+        output("nscs2", 1),
+        output("nscs3", 1),
+        output("poscmp", 1),
+    ])
+    .without(RTL_PENDING_PINS)
+}
+
+fn pin_values(rst: bool, i: &Inputs, o: &Outputs) -> [u64; 22] {
+    [
+        rst, i.nscs_c, i.sck_c, i.sdi_c, i.sdi_s, i.ref1, i.ref2, i.ref3, i.refr1, i.refr2, i.refr3,
+        o.nint_sdo_c, o.sdoz_c, o.sdoz_c_oe, o.nscs_s, o.sck_s, o.sdo_s, o.sdi_s_o, o.sdi_s_oe, o.nscs2,
+        o.nscs3, o.poscmp,
+    ]
+    .map(|b| b as u64)
+}
+
+pub struct ChipPins {
+    w: PinWriter,
+}
+
+impl ChipPins {
+    pub fn create(stem: &std::path::Path) -> Result<ChipPins, String> {
+        Ok(ChipPins { w: PinWriter::create(stem, chip_layout())? })
+    }
+}
+
+impl Recorder for ChipPins {
+    fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
+        self.w.line(&pin_values(true, &Inputs::default(), &chip.outputs()))
+    }
+    #[inline]
+    fn edge(&mut self, _chip: &Tmc429, inp: &Inputs, out: &Outputs) -> Result<(), String> {
+        self.w.line(&pin_values(false, inp, out))
+    }
+    fn finish(self: Box<Self>, meta: &Meta) -> Result<Vec<AtomicFile>, String> {
+        self.w.finish(meta.clone())
+    }
+}
+
+// ---- SPI slave pins ------------------------------------------------------------------------
+
+/// The ports of `tmc429_spi_slave` (rtl/tmc429_spi_slave.v), inputs then outputs.
+pub fn spi_layout() -> Layout {
+    Layout::new(vec![
+        input("rst", 1),
+        input("nscs_c", 1),
+        input("sck_c", 1),
+        input("sdi_c", 1),
+        input("status", 8),
+        input("rd_data", 24),
+        output("rd_addr", 7),
+        output("frame_start", 1),
+        output("exec", 1),
+        output("cmd", 32),
+        output("active", 1),
+        output("sdo", 1),
+    ])
+}
+
+pub struct SpiPins {
+    w: PinWriter,
+    /// status and rd_data the register file presents before the next edge.
+    pre: (u8, u32),
+}
+
+impl SpiPins {
+    pub fn create(stem: &std::path::Path) -> Result<SpiPins, String> {
+        Ok(SpiPins { w: PinWriter::create(stem, spi_layout())?, pre: (0, 0) })
+    }
+    fn line(&mut self, rst: bool, i: &Inputs, chip: &Tmc429) -> Result<(), String> {
+        let p = chip.spi_ports();
+        let v = [
+            rst as u64,
+            i.nscs_c as u64,
+            i.sck_c as u64,
+            i.sdi_c as u64,
+            self.pre.0 as u64,
+            self.pre.1 as u64,
+            p.rd_addr as u64,
+            p.frame_start as u64,
+            p.exec as u64,
+            p.cmd as u64,
+            p.active as u64,
+            p.sdo as u64,
+        ];
+        self.pre = (p.status, p.rd_data);
+        self.w.line(&v)
+    }
+}
+
+impl Recorder for SpiPins {
+    fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
+        let p = chip.spi_ports();
+        self.pre = (p.status, p.rd_data);
+        self.line(true, &Inputs::default(), chip)
+    }
+    #[inline]
+    fn edge(&mut self, chip: &Tmc429, inp: &Inputs, _out: &Outputs) -> Result<(), String> {
+        self.line(false, inp, chip)
+    }
+    fn finish(self: Box<Self>, meta: &Meta) -> Result<Vec<AtomicFile>, String> {
+        self.w.finish(meta.clone())
+    }
+}
+
+// ---- CSV -------------------------------------------------------------------------------------
+
+/// A CSV file with a header line.
+pub struct Csv {
+    f: AtomicFile,
+    row: String,
+}
+
+impl Csv {
+    pub fn create(path: &std::path::Path, header: &str) -> Result<Csv, String> {
+        let mut f = AtomicFile::create(path)?;
+        f.write_all(header.as_bytes())?;
+        f.write_all(b"\n")?;
+        Ok(Csv { f, row: String::new() })
+    }
+    /// Appends a field (quoted when it holds a comma or a quote).
+    pub fn field(&mut self, v: impl std::fmt::Display) -> &mut Self {
+        if !self.row.is_empty() {
+            self.row.push(',');
+        }
+        let s = v.to_string();
+        if s.contains(',') || s.contains('"') {
+            self.row.push('"');
+            self.row.push_str(&s.replace('"', "\"\""));
+            self.row.push('"');
+        } else {
+            self.row.push_str(&s);
+        }
+        self
+    }
+    pub fn end_row(&mut self) -> Result<(), String> {
+        self.row.push('\n');
+        let r = self.f.write_all(self.row.as_bytes());
+        self.row.clear();
+        r
+    }
+    pub fn finish(self) -> AtomicFile {
+        self.f
+    }
+}
+
+/// The data pin the µC reads: SDOZ_C while enabled, else nINT_SDO_C.
+fn data_pin(o: &Outputs) -> bool {
+    if o.sdoz_c_oe {
+        o.sdoz_c
+    } else {
+        o.nint_sdo_c
+    }
+}
+
+/// spi.csv: every µC frame, decoded from the pins (what a logic analyser on the bus sees).
+pub struct SpiCsv {
+    csv: Csv,
+    chip: Chip,
+    prev_in: Inputs,
+    prev_out: Outputs,
+    /// Frame in progress: start cycle, bits sent, bits received, count.
+    frame: Option<(u64, u64, u64, u32)>,
+}
+
+pub const SPI_CSV_HEADER: &str = "start_cycle,end_cycle,nbits,sent,received,kind,register,fields,status";
+
+impl SpiCsv {
+    pub fn create(path: &std::path::Path, chip: Chip) -> Result<SpiCsv, String> {
+        let t = Tmc429::new(chip);
+        Ok(SpiCsv {
+            csv: Csv::create(path, SPI_CSV_HEADER)?,
+            chip,
+            prev_in: Inputs::default(),
+            prev_out: t.outputs(),
+            frame: None,
+        })
+    }
+
+    fn row(&mut self, start: u64, end: u64, sent: u64, recv: u64, n: u32) -> Result<(), String> {
+        let digits = (n as usize).div_ceil(4).max(1);
+        let (kind, reg, fields) = if n == 32 {
+            let d = sent as u32;
+            let a7 = ((d >> 25) & 0x7F) as u8;
+            let read = (d >> 24) & 1 == 1;
+            let data = if read { recv as u32 & 0xFF_FFFF } else { d & 0xFF_FFFF };
+            let fields = match (regmap::lookup(self.chip, a7), Addr::from_a7(a7)) {
+                (Some(_), Addr::Ram(a)) => {
+                    format!("cell{}={} cell{}={}", 2 * a as u32 + 1, (data >> 8) & 63, 2 * a as u32, data & 63)
+                }
+                (Some((r, _)), _) => regmap::decode_fields(r, data),
+                (None, _) => String::new(),
+            };
+            (if read { "read" } else { "write" }, regmap::display_name(self.chip, a7), fields)
+        } else if n < 32 {
+            ("short", String::new(), String::new())
+        } else {
+            ("long", String::new(), String::new())
+        };
+        let status = if n >= 8 { script::decode_status((recv >> (n - 8)) as u8) } else { String::new() };
+        let c = &mut self.csv;
+        c.field(start).field(end).field(n);
+        c.field(format!("{:0digits$X}", sent & mask(n)));
+        c.field(format!("{:0digits$X}", recv & mask(n)));
+        c.field(kind).field(reg).field(fields).field(status);
+        c.end_row()
+    }
+}
+
+fn mask(n: u32) -> u64 {
+    if n >= 64 {
+        u64::MAX
+    } else {
+        (1u64 << n) - 1
+    }
+}
+
+impl Recorder for SpiCsv {
+    fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
+        self.prev_out = chip.outputs();
+        Ok(())
+    }
+    fn edge(&mut self, chip: &Tmc429, inp: &Inputs, out: &Outputs) -> Result<(), String> {
+        let cycle = chip.cycle();
+        if !inp.nscs_c && self.prev_in.nscs_c {
+            self.frame = Some((cycle, 0, 0, 0));
+        }
+        if let Some((_, sent, recv, n)) = self.frame.as_mut() {
+            if !inp.nscs_c && inp.sck_c && !self.prev_in.sck_c {
+                // the µC samples the data pin as SCK_C rises (the level after the last edge)
+                *sent = *sent << 1 | inp.sdi_c as u64;
+                *recv = *recv << 1 | data_pin(&self.prev_out) as u64;
+                *n += 1;
+            }
+        }
+        if inp.nscs_c && !self.prev_in.nscs_c {
+            if let Some((start, sent, recv, n)) = self.frame.take() {
+                self.row(start, cycle, sent, recv, n)?;
+            }
+        }
+        self.prev_in = *inp;
+        self.prev_out = *out;
+        Ok(())
+    }
+    fn finish(self: Box<Self>, _meta: &Meta) -> Result<Vec<AtomicFile>, String> {
+        Ok(vec![self.csv.finish()])
+    }
+}
+
+/// ramp.csv: every ramp tick of every motor (C40, C51): the state after the tick's edge.
+pub struct RampCsv {
+    csv: Csv,
+    /// Bit m: motor m has a ramp tick at the next edge.
+    due: u8,
+    /// Steps of each motor since its last ramp tick (signed).
+    steps: [i64; 3],
+}
+
+pub const RAMP_CSV_HEADER: &str = "cycle,motor,mode,x_target,x_actual,v_internal,v_actual,v_target,a_actual,steps";
+
+impl RampCsv {
+    pub fn create(path: &std::path::Path) -> Result<RampCsv, String> {
+        Ok(RampCsv { csv: Csv::create(path, RAMP_CSV_HEADER)?, due: 0, steps: [0; 3] })
+    }
+    fn plan(&mut self, chip: &Tmc429) {
+        let c = chip.probes().prescaler;
+        self.due = 0;
+        if chip.is_powered_down() || c & 31 != PHASE_RAMP {
+            return;
+        }
+        let frame = c >> 5;
+        for m in 0..chip.motor_count() {
+            let mask = (1u32 << chip.motor(m).ramp_div) - 1;
+            if frame & mask == mask {
+                self.due |= 1 << m;
+            }
+        }
+    }
+}
+
+const MODES: [&str; 4] = ["RAMP", "SOFT", "VELOCITY", "HOLD"];
+
+impl Recorder for RampCsv {
+    fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
+        self.plan(chip);
+        Ok(())
+    }
+    fn edge(&mut self, chip: &Tmc429, _inp: &Inputs, _out: &Outputs) -> Result<(), String> {
+        for m in 0..chip.motor_count() {
+            let mo = chip.motor(m);
+            if mo.step {
+                self.steps[m] += if mo.dir { -1 } else { 1 };
+            }
+            if (self.due >> m) & 1 != 0 {
+                let c = &mut self.csv;
+                c.field(chip.cycle()).field(m).field(MODES[mo.rm as usize & 3]);
+                c.field(sext24(mo.x_target)).field(sext24(mo.x_actual)).field(mo.v).field(mo.v_actual());
+                c.field(tmc429_model::motor::sext12(mo.v_target as u32)).field(mo.a_actual).field(self.steps[m]);
+                c.end_row()?;
+                self.steps[m] = 0;
+            }
+        }
+        self.plan(chip);
+        Ok(())
+    }
+    fn finish(self: Box<Self>, _meta: &Meta) -> Result<Vec<AtomicFile>, String> {
+        Ok(vec![self.csv.finish()])
+    }
+}
+
+/// chain.csv: every driver-chain datagram: start (the edge that took the snapshot, C80) and end
+/// (chip select inactive, C97), the bits as sent on SDO_S, and the signals of each motor it
+/// carried (the snapshot of C80, decoded by primary signal code, [428] Table 11-1).
+pub struct ChainCsv {
+    csv: Csv,
+    dec: EventDecoder,
+    prev_state: u8,
+    /// Datagram in progress: start cycle, snapshot, covering, motors carried so far.
+    cur: Option<(u64, [u32; 3], bool, u8)>,
+    ended: Vec<Event>,
+}
+
+pub fn chain_csv_header() -> String {
+    let mut h = String::from("start_cycle,end_cycle,nbits,bits,cover,motors");
+    for m in 0..3 {
+        for s in ["dac_a", "ph_a", "fd_a", "dac_b", "ph_b", "fd_b", "dir", "step"] {
+            let _ = write!(h, ",m{m}_{s}");
+        }
+    }
+    h
+}
+
+impl ChainCsv {
+    pub fn create(path: &std::path::Path) -> Result<ChainCsv, String> {
+        Ok(ChainCsv {
+            csv: Csv::create(path, &chain_csv_header())?,
+            dec: EventDecoder::new(),
+            prev_state: chain::IDLE,
+            cur: None,
+            ended: Vec::new(),
+        })
+    }
+}
+
+/// The signals of one motor in a snapshot: DAC_A, PH_A, FD_A, DAC_B, PH_B, FD_B, Direction, Step.
+pub fn decode_signals(v: u32) -> [u32; 8] {
+    let bit = |c: u8| (v >> c) & 1;
+    [
+        (v >> microstep::DAC_A_0) & 63,
+        bit(microstep::PH_A),
+        bit(microstep::FD_A),
+        (v >> microstep::DAC_B_0) & 63,
+        bit(microstep::PH_B),
+        bit(microstep::FD_B),
+        bit(microstep::DIRECTION),
+        bit(microstep::STEP),
+    ]
+}
+
+impl Recorder for ChainCsv {
+    fn reset(&mut self, _chip: &Tmc429) -> Result<(), String> {
+        Ok(())
+    }
+    fn edge(&mut self, chip: &Tmc429, _inp: &Inputs, out: &Outputs) -> Result<(), String> {
+        let ch = chip.chain();
+        // the end of a datagram is seen on the pins (before a new one may start in this edge)
+        let ended = &mut self.ended;
+        self.dec.observe(chip, out, chip.cycle(), &mut |e| {
+            if let Event::Chain { .. } = e {
+                ended.push(e)
+            }
+        });
+        for e in std::mem::take(&mut self.ended) {
+            if let (Event::Chain { cycle, nbits, bits }, Some((start, snap, cover, motors))) = (e, self.cur.take()) {
+                let c = &mut self.csv;
+                let digits = (nbits as usize).div_ceil(4).max(1);
+                c.field(start).field(cycle).field(nbits).field(format!("{bits:0digits$X}"));
+                c.field(cover as u8).field(motors as u32 + 1);
+                for (m, s) in snap.iter().enumerate() {
+                    for v in decode_signals(*s) {
+                        if m <= motors as usize {
+                            c.field(v);
+                        } else {
+                            c.field("");
+                        }
+                    }
+                }
+                c.end_row()?;
+            }
+        }
+        let started = ch.state == chain::SETUP && (self.prev_state == chain::IDLE || self.prev_state == chain::CSOFF);
+        if started {
+            self.cur = Some((chip.cycle(), ch.snapshot_signals(chip.ram()), ch.cover_busy, 0));
+        }
+        if let Some(cur) = self.cur.as_mut() {
+            cur.3 = cur.3.max(ch.motor);
+        }
+        self.prev_state = ch.state;
+        Ok(())
+    }
+    fn finish(self: Box<Self>, _meta: &Meta) -> Result<Vec<AtomicFile>, String> {
+        Ok(vec![self.csv.finish()])
+    }
+}

@@ -1,0 +1,444 @@
+//! Scenarios: what the µC and the switches do, as pin levels per CLK cycle.
+//!
+//! A scenario is a datagram script (the `tmc429 spi` format, `model/src/script.rs`) run by a
+//! virtual µC at a fixed SCK_C half period, exactly as `tmc429 spi` runs it, or the seeded
+//! random traffic of the co-simulation (`stimulus.rs`). Built-in scenarios are scripts made
+//! here; a scenario file is a script. Another loader (a TOML scenario) plugs in by producing a
+//! [`Scenario`] with a [`Source`].
+
+use std::collections::VecDeque;
+use std::path::Path;
+
+use tmc429_model::regmap::{self, Addr};
+use tmc429_model::script::{self, Command, Line, Pin};
+use tmc429_model::{pmulpdiv, Chip, Inputs};
+
+use crate::stimulus::{Driver, Profile, Stimulus};
+
+/// Where the pin levels come from.
+#[derive(Clone, Debug)]
+pub enum Source {
+    /// A datagram script; the µC's SCK_C half period in CLK cycles.
+    Script { lines: Vec<Line>, sck_half: u32 },
+    /// The co-simulation's seeded random traffic for `cycles` CLK cycles.
+    Random { cycles: u64, profile: Profile },
+}
+
+/// A scenario for one chip.
+#[derive(Clone, Debug)]
+pub struct Scenario {
+    pub name: String,
+    pub chip: Chip,
+    pub fclk: u64,
+    pub seed: u64,
+    pub source: Source,
+    /// What the scenario does (recorded in `.meta`).
+    pub notes: Vec<String>,
+    /// Keeps the motors in HOLD_MODE and the driver chain idle: replayable on an RTL without
+    /// motion core and driver chain.
+    pub hold_only: bool,
+}
+
+/// The built-in scenarios: name and what they are for.
+pub const BUILTIN: &[(&str, &str)] = &[
+    ("datasheet", "the datagram examples of [428] §6.5 (write, read, RAM, status by an 8-bit frame)"),
+    ("registers", "every register of the chip written and read back; motors in HOLD_MODE, no driver-chain datagram"),
+    ("chip-hold", "switches, interrupts, nINT, position compare, sdo_int, power down and wake-up; motors in HOLD_MODE"),
+    ("reference-search", "motor 0 searches REF1 in VELOCITY_MODE, stops, is zeroed and moves off in RAMP_MODE"),
+    ("ramp-modes", "RAMP_MODE, SOFT_MODE and VELOCITY_MODE moves, a reversal and HOLD_MODE with a v_actual write"),
+    ("ramp-boundary", "v_max 2047 / a_max 2047, v_target -2048, a_max 0, v_min > v_max, a move across x = 2^23"),
+    ("ramp-p-examples", "RAMP_MODE moves with the pmul/pdiv of the [428] §8.11 method (digest §5.5 rows)"),
+    ("chain-datasheet", "Table 11-2 configuration, Table 12-2 LUT, the digest §5.2 datagrams and a cover datagram"),
+    ("tables", "lut unit: complete tables, every usrs, both directions, every i_scale, sine and rhomb LUT"),
+    ("random", "the co-simulation's seeded random register traffic (--seed, --cycles)"),
+];
+
+/// Script builder.
+#[derive(Default)]
+struct B {
+    lines: Vec<Line>,
+}
+
+impl B {
+    fn push(&mut self, command: Command) -> &mut Self {
+        let line = self.lines.len() + 1;
+        self.lines.push(Line { line, command });
+        self
+    }
+    fn w(&mut self, a7: u8, data: u32) -> &mut Self {
+        self.push(Command::Datagram(regmap::datagram(a7, false, data)))
+    }
+    fn r(&mut self, a7: u8) -> &mut Self {
+        self.push(Command::Datagram(regmap::datagram(a7, true, 0)))
+    }
+    /// Motor register write.
+    fn m(&mut self, motor: u8, idx: u8, data: u32) -> &mut Self {
+        self.w(regmap::motor_a7(motor, idx), data & 0xFF_FFFF)
+    }
+    fn g(&mut self, jdx: u8, data: u32) -> &mut Self {
+        self.w(regmap::global_a7(jdx), data)
+    }
+    fn wait(&mut self, c: u64) -> &mut Self {
+        self.push(Command::Wait(c))
+    }
+    fn pin(&mut self, p: Pin, level: bool) -> &mut Self {
+        self.push(Command::Pins(vec![(p, level)]))
+    }
+    fn status8(&mut self) -> &mut Self {
+        self.push(Command::Bits { n: 8, value: 0 })
+    }
+    /// RAMP-mode parameters of the [428] §8.11 method for a_max, ramp_div, pulse_div.
+    fn p_of(&mut self, motor: u8, a_max: u32, rd: u32, pd: u32, reduction: f32) -> &mut Self {
+        let p = pmulpdiv::calc(a_max as i32, rd as i32, pd as i32, reduction);
+        let v = p.register_value().expect("built-in p examples are representable");
+        self.m(motor, 12, pd << 12 | rd << 8).m(motor, 6, a_max).m(motor, 9, v)
+    }
+}
+
+const IDX_RM: u8 = 10;
+const HOLD: u32 = 3;
+
+/// Data of a write that keeps a chip replayable without motion core and driver chain: rm
+/// HOLD_MODE, v_actual 0, no continuous update, no refmux, no cover datagram (`None`: read it
+/// instead).
+fn hold_safe(a7: u8, data: u32) -> Option<u32> {
+    match Addr::from_a7(a7) {
+        Addr::Motor(_, 10) => Some(data | HOLD),
+        Addr::Motor(_, 5) => Some(data & !0xFFF),
+        Addr::Global(3) => None,
+        Addr::Global(15) => Some(data & !(1 << 16 | 1 << 20)),
+        _ => Some(data),
+    }
+}
+
+fn registers(chip: Chip) -> B {
+    let mut b = B::default();
+    for m in 0..3 {
+        b.m(m, IDX_RM, HOLD);
+    }
+    let mut a7s: Vec<u8> = (0u8..0x40).filter(|a| regmap::lookup(chip, *a).is_some()).collect();
+    // RAM: the first and last word of each half (every word is a register of the same kind)
+    a7s.extend([0x40u8, 0x5F, 0x60, 0x7F].iter().filter(|a| regmap::lookup(chip, **a).is_some()));
+    for a7 in a7s {
+        // a different pattern per address catches a decode error
+        let data = (a7 as u32).wrapping_mul(0x9E_3779) & 0xFF_FFFF ^ 0x5A_A55A;
+        match hold_safe(a7, data) {
+            Some(d) => b.w(a7, d),
+            None => b.r(a7),
+        };
+        b.r(a7);
+    }
+    b
+}
+
+fn datasheet() -> B {
+    let mut b = B::default();
+    b.push(Command::Datagram(0x1A00_0123)); // write dx_ref_tolerance[1] = $123
+    b.push(Command::Datagram(0x1B00_0000)); // read it: $15000123 (E1)
+    b.push(Command::Datagram(0xFE00_2321)); // RAM ADDR 63: cells 126, 127 (E2)
+    b.push(Command::Datagram(0xFF00_0000)); // read: $15002321
+    b.status8();
+    b.push(Command::Datagram(0x7300_0000)); // type_version
+    b
+}
+
+fn chip_hold() -> B {
+    let mut b = B::default();
+    for m in 0..3 {
+        b.m(m, IDX_RM, HOLD);
+    }
+    // CDGW: a datagram_low_word write arms it; an 8-bit frame reads the status byte
+    b.g(0, 0).status8();
+    // interrupts of motor 0: every mask bit; REF1 high raises STOP_LEFT_HIGH
+    b.m(0, 11, 0xFF00).r(regmap::motor_a7(0, 11));
+    b.pin(Pin::Ref1, true).wait(20).status8().r(regmap::motor_a7(0, 11));
+    b.pin(Pin::Ref1, false).wait(20).m(0, 11, 0xFFFF).r(regmap::motor_a7(0, 11));
+    // position compare (TMC429/TMC4210): M = 1, pos_comp = 100, x_actual := 100
+    b.g(6, 0x100).g(5, 100).m(0, 1, 100).wait(10).r(regmap::global_a7(6));
+    // sdo_int: the data leaves on SDOZ_C only, nINT_SDO_C is nINT
+    b.g(4, 0x002).r(regmap::motor_a7(0, 1)).g(6, 0x101).g(4, 0);
+    // POS_END of motor 1, REF_MISS of motor 2, right switches with en_refr (TMC429)
+    b.m(1, 11, 0x0100).m(1, 0, 5).m(1, 1, 5).m(1, 11, 0x0101);
+    b.m(2, 11, 0x0400).m(2, 1, 7).m(2, 1, 0).r(regmap::motor_a7(2, 11)).m(2, 11, 0);
+    b.g(4, 0x100).pin(Pin::Refr2, false).wait(10).r(regmap::global_a7(14)).pin(Pin::Refr2, true);
+    b.g(4, 0x001).pin(Pin::Ref3, true).wait(10).r(regmap::global_a7(14)).pin(Pin::Ref3, false).g(4, 0);
+    // power down, asleep for a while, the next frame wakes the chip
+    b.g(8, 0).wait(200).r(regmap::global_a7(9)).r(regmap::global_a7(6));
+    b.m(0, 11, 0).g(6, 0).status8();
+    b
+}
+
+fn reference_search() -> B {
+    let mut b = B::default();
+    // motor 0: VELOCITY_MODE toward the left switch, hard stop; then zero and move off
+    b.m(0, 2, 20).m(0, 3, 400).p_of(0, 1000, 2, 0, 0.05).m(0, 13, 0);
+    b.m(0, 11, 0x0800); // STOP interrupt
+    b.m(0, IDX_RM, 2).m(0, 4, (-300i32) as u32 & 0xFFF);
+    b.wait(6000).pin(Pin::Ref1, true).wait(400).r(regmap::motor_a7(0, 1)).status8();
+    // zero the position at the switch, leave it in RAMP_MODE
+    b.m(0, IDX_RM, 0).m(0, 1, 0).m(0, 0, 0).m(0, 11, 0x08FF);
+    b.m(0, 0, 40).wait(2000).pin(Pin::Ref1, false).wait(24_000).r(regmap::motor_a7(0, 1));
+    b
+}
+
+fn ramp_modes() -> B {
+    let mut b = B::default();
+    // motor 0 RAMP_MODE, motor 1 SOFT_MODE, motor 2 VELOCITY_MODE; ramp_div 2, pulse_div 0
+    for m in 0..3 {
+        b.m(m, 2, 20).m(m, 3, 600).p_of(m, 2000, 2, 0, 0.05);
+    }
+    b.m(1, IDX_RM, 1).m(2, IDX_RM, 2);
+    b.m(0, 0, 300).m(1, 0, (-200i32) as u32).m(2, 4, 500);
+    b.wait(45_000).m(2, 4, (-250i32) as u32 & 0xFFF);
+    b.wait(20_000).m(2, 4, 0).m(0, 0, 100);
+    b.wait(35_000);
+    // HOLD_MODE: V only by a v_actual write
+    b.m(2, IDX_RM, HOLD).m(2, 5, 200).wait(4_000).m(2, 5, 0).wait(1_000);
+    b
+}
+
+fn ramp_boundary() -> B {
+    let mut b = B::default();
+    // motor 0: VELOCITY_MODE at the limits (a_max 2047 = 8 units of v per ramp tick), then
+    // v_target -2048 (acts as -2047), then a_max 0 freezes V where it is
+    b.m(0, 3, 2047).m(0, 6, 2047).m(0, 12, 0).m(0, IDX_RM, 2).m(0, 4, 2047);
+    b.wait(9_000).m(0, 4, 0x800).wait(18_000).m(0, 6, 0).m(0, 4, 0).wait(3_000);
+    // motor 1: RAMP_MODE with v_min > v_max (the clamp yields v_max), a short move
+    b.m(1, 2, 100).m(1, 3, 50).p_of(1, 64, 1, 0, 0.05).m(1, 0, 12);
+    // motor 2: RAMP_MODE across the 24-bit signed boundary 2^23 - 1 → -2^23
+    b.m(2, 1, 0x7F_FFF0).m(2, 2, 1).m(2, 3, 600).p_of(2, 2000, 2, 0, 0.05).m(2, 0, 0x80_0010);
+    b.wait(18_000);
+    // pmul 127 / pdiv 15 (kept, C22): the target law at its smallest p, v_min carries the move
+    b.m(2, 2, 40).m(2, 9, 0x7F0F).m(2, 0, 0x7F_FFF8).wait(40_000);
+    b
+}
+
+fn ramp_p_examples() -> B {
+    let mut b = B::default();
+    // digest §5.5: a_max 1000 rd 3 pd 3, 5 % → p_mul 237 pdiv 2; 2047/0/0, 5 % → 243/1;
+    // 128/0/0, 0 % → 128/4 (p = 1). v_min > 0: the √-law aims one step short (C50) and v_min
+    // carries the last step (C52).
+    b.m(0, 2, 50).m(0, 3, 1000).p_of(0, 1000, 3, 3, 0.05).m(0, 0, 60);
+    b.m(1, 2, 1).m(1, 3, 2047).p_of(1, 2047, 0, 0, 0.05).m(1, 0, 400);
+    b.m(2, 2, 10).m(2, 3, 200).p_of(2, 128, 0, 0, 0.0).m(2, 0, 150);
+    b.wait(PEX_WAIT);
+    b
+}
+
+const PEX_WAIT: u64 = 100_000;
+
+fn chain_datasheet() -> B {
+    let mut b = B::default();
+    // Table 11-3: the 18 configuration datagrams of Table 11-2
+    let cells = regmap_cells();
+    for (addr, pair) in cells.chunks(2).enumerate() {
+        b.w(regmap::ram_a7(addr as u8), (pair[1] as u32) << 8 | pair[0] as u32);
+    }
+    // Table 12-2: the quarter sine wave
+    for k in 0..32u8 {
+        let y = tmc429_model::ram::SINE_LUT;
+        b.w(regmap::ram_a7(32 + k), (y[2 * k as usize + 1] as u32) << 8 | y[2 * k as usize] as u32);
+    }
+    // LSMD = 2, clk2_div 7 (1 MHz SCK_S at 16 MHz)
+    b.g(15, 0x0702);
+    // a cover datagram of length 0 sends the unchanged datagram: w = (0,0,0) → $05F05F07F
+    b.g(2, 0).g(3, 0).wait(800);
+    // w = (16,16,16) → $35D35D37D; with i_scale %100 → $1CF1CF1EF
+    for m in 0..3 {
+        b.m(m, 15, 16);
+    }
+    b.g(3, 0).wait(800);
+    for m in 0..3 {
+        b.m(m, 8, 4 << 20 | 4 << 16 | 4 << 12);
+    }
+    b.g(3, 0).wait(800);
+    for m in 0..3 {
+        b.m(m, 8, 0).m(m, 15, 0);
+    }
+    // w = (100,0,0) → $55805F07F
+    b.m(0, 15, 100).g(3, 0).wait(800).m(0, 15, 0);
+    // cover example: cover_pos 0, cover_len 12, $000ABC → $ABC05F07F
+    b.g(2, 12).g(3, 0xABC).wait(800);
+    b
+}
+
+/// Table 11-2 as RAM cells 0..35.
+fn regmap_cells() -> [u8; 36] {
+    tmc429_model::ram::TABLE_11_2
+}
+
+/// Looks up a built-in scenario. `cycles`: length of `random`.
+pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Option<Scenario> {
+    let (b, hold_only) = match name {
+        "datasheet" => (datasheet(), true),
+        "registers" => (registers(chip), true),
+        "chip-hold" => (chip_hold(), true),
+        "reference-search" => (reference_search(), false),
+        "ramp-modes" => (ramp_modes(), false),
+        "ramp-boundary" => (ramp_boundary(), false),
+        "ramp-p-examples" => (ramp_p_examples(), false),
+        "chain-datasheet" => (chain_datasheet(), false),
+        // the lut unit's tables need no pins
+        "tables" => (B::default(), true),
+        "random" => {
+            return Some(Scenario {
+                name: name.into(),
+                chip,
+                fclk,
+                seed,
+                source: Source::Random { cycles, profile: Profile::Registers },
+                notes: vec!["co-simulation stimulus, register profile (docs/cosim.md)".into()],
+                hold_only: true,
+            })
+        }
+        _ => return None,
+    };
+    let desc = BUILTIN.iter().find(|(n, _)| *n == name).map(|(_, d)| d.to_string()).unwrap_or_default();
+    // The datasheet examples run on a chip where the motors hold (the reset state's RAMP_MODE
+    // with x = x_target = 0 never moves, and nothing here changes that).
+    Some(Scenario {
+        name: name.into(),
+        chip,
+        fclk,
+        seed: 0,
+        source: Source::Script { lines: b.lines, sck_half: SCK_HALF },
+        notes: vec![desc],
+        hold_only,
+    })
+}
+
+/// SCK_C half period of the built-in scenarios: the minimum of [428] Table 6-1 (C11).
+pub const SCK_HALF: u32 = 3;
+
+/// A scenario file: a datagram script (`tmc429 spi` format).
+pub fn from_file(path: &Path, chip: Chip, fclk: u64, sck_half: u32) -> Result<Scenario, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    let name = path.display().to_string();
+    let lines = script::parse(&text, &name)
+        .map_err(|errs| errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n"))?;
+    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "script".into());
+    Ok(Scenario {
+        name: stem,
+        chip,
+        fclk,
+        seed: 0,
+        source: Source::Script { lines, sck_half },
+        notes: vec![format!("datagram script {}", path.display())],
+        hold_only: false,
+    })
+}
+
+impl Scenario {
+    /// The pin levels, one [`Inputs`] per CLK cycle.
+    pub fn inputs(&self) -> Box<dyn Iterator<Item = Inputs> + '_> {
+        match &self.source {
+            Source::Script { lines, sck_half } => Box::new(ScriptInputs {
+                lines: lines.iter(),
+                pins: Inputs::default(),
+                half: *sck_half,
+                buf: VecDeque::new(),
+                wait: 0,
+            }),
+            Source::Random { cycles, profile } => {
+                let mut stim = Stimulus::new(self.chip, *profile, self.seed);
+                let mut drv = Driver::default();
+                Box::new((0..*cycles).map(move |_| {
+                    if drv.ready() {
+                        drv.start(stim.next_txn());
+                    }
+                    drv.step().0
+                }))
+            }
+        }
+    }
+}
+
+/// The virtual µC of `tmc429 spi` (model/src/host.rs) as a pin-level stream: a frame is nSCS_C
+/// low for `half` cycles, per bit SCK_C low with the data for `half` cycles then high for
+/// `half` cycles, then nSCS_C high for `half` cycles.
+struct ScriptInputs<'a> {
+    lines: std::slice::Iter<'a, Line>,
+    pins: Inputs,
+    half: u32,
+    buf: VecDeque<Inputs>,
+    wait: u64,
+}
+
+impl ScriptInputs<'_> {
+    fn hold(&mut self) {
+        for _ in 0..self.half {
+            self.buf.push_back(self.pins);
+        }
+    }
+    fn frame(&mut self, value: u32, nbits: u32) {
+        self.pins.nscs_c = false;
+        self.hold();
+        for i in (0..nbits).rev() {
+            self.pins.sck_c = false;
+            self.pins.sdi_c = (value >> i) & 1 != 0;
+            self.hold();
+            self.pins.sck_c = true;
+            self.hold();
+        }
+        self.pins.nscs_c = true;
+        self.hold();
+    }
+}
+
+impl Iterator for ScriptInputs<'_> {
+    type Item = Inputs;
+    fn next(&mut self) -> Option<Inputs> {
+        loop {
+            if let Some(i) = self.buf.pop_front() {
+                return Some(i);
+            }
+            if self.wait > 0 {
+                self.wait -= 1;
+                return Some(self.pins);
+            }
+            match &self.lines.next()?.command {
+                Command::Datagram(d) => self.frame(*d, 32),
+                Command::Bits { n, value } => self.frame(*value, *n),
+                Command::Wait(c) => self.wait = *c,
+                Command::Pins(set) => {
+                    for (p, v) in set {
+                        p.set(&mut self.pins, *v);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use tmc429_model::host::Host;
+
+    /// The pin stream of a script equals what `tmc429 spi`'s virtual µC drives.
+    #[test]
+    fn script_inputs_equal_host() {
+        let sc = builtin("datasheet", Chip::Tmc429, 32_000_000, 0, 0).unwrap();
+        let mine: Vec<Inputs> = sc.inputs().collect();
+        let mut host = Host::new(Chip::Tmc429);
+        host.set_sck_half(SCK_HALF).unwrap();
+        let seen = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+        let s2 = seen.clone();
+        host.set_observer(Box::new(move |_c, i, _o| s2.lock().unwrap().push(*i)));
+        let Source::Script { lines, .. } = &sc.source else { unreachable!() };
+        let mut sink = Vec::new();
+        script::run(&mut host, lines, Default::default(), &mut sink).unwrap();
+        assert_eq!(*seen.lock().unwrap(), mine);
+        // 5 frames of 32 bits and one of 8, each (1 + 2·bits + 1)·3 cycles
+        assert_eq!(mine.len(), 5 * 198 + 54);
+    }
+
+    #[test]
+    fn every_builtin_resolves() {
+        for (name, _) in BUILTIN {
+            let s = builtin(name, Chip::Tmc429, 32_000_000, 1, 100).unwrap();
+            assert_eq!(s.inputs().next().is_some(), *name != "tables", "{name}");
+        }
+        assert!(builtin("nope", Chip::Tmc429, 1, 0, 0).is_none());
+    }
+}
