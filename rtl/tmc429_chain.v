@@ -16,11 +16,14 @@
 // clears them) and the cover position, length (max 24) and data are latched.
 //
 // RAM reads (C80): the state before a bit's LOW entry (SETUP, HIGH or GAP, >= 8 edges) reads
-// the bit's configuration cell at its edge with cnt = 3 (the current cell in SETUP and GAP,
-// the following one in HIGH) and, at cnt = 2, the LUT cell that cell's code needs for the
+// the bit's configuration cell at its edge with cnt = 4 (the current cell in SETUP and GAP,
+// the following one in HIGH) and, at cnt = 3, the LUT cell that cell's code needs for the
 // current motor (tmc429_microstep). The RAM read port is synchronous with a read enable:
-// `ram_q` holds the cell read at the last enabled edge, so it holds the configuration cell
-// during the cnt = 2 edge (copied to `cfg`) and the LUT cell during the LOW entry edge.
+// `ram_q` holds the cell read at the last enabled edge. Pipeline to the SDO_S pin register:
+// cnt = 3: `cfg` := configuration cell; cnt = 2: `dac` := scaled LUT value, cover decision
+// registered; cnt = 1 (LOW entry): the bit from `cfg`, `dac` and the snapshot. The snapshot
+// is kept as a shift register whose slot 0 is the current motor (shifted at the NxM gap).
+// SCK_S timing values are registers, loaded from the new clk2_div of every edge.
 //
 // Requests (C83): a step flag, cw, a continuous-update counter wrapping (per motor, 10 bits,
 // counts the motor's ramp ticks while cont_update = 1, reset 0 / 341 / 682). Leaving SPI
@@ -44,7 +47,7 @@ module tmc429_chain (
     input  wire [8:0]  i_scale,        // selected current scales {m2, m1, m0}
     input  wire [2:0]  ramp_tick,      // ramp ticks of this edge (C40)
     // global registers, old state
-    input  wire [7:0]  clk2_div,
+    input  wire [7:0]  clk2_div_nx,    // clk2_div of the new state (timing registers)
     input  wire [1:0]  lsmd,
     input  wire        pol_ph_ab,
     input  wire        pol_fd_ab,
@@ -85,11 +88,20 @@ module tmc429_chain (
     localparam IDLE = 3'd0, SETUP = 3'd1, LOW = 3'd2, HIGH = 3'd3, GAP = 3'd4, HOLD = 3'd5,
                CSOFF = 3'd6;
 
-    // ---- SCK_S timing (C81) ------------------------------------------------------------
-    wire [8:0] t_lo  = {1'b0, clk2_div} + 9'd1;
-    wire [8:0] t_hi  = (clk2_div >= 8'd7) ? t_lo : (9'd15 - {1'b0, clk2_div});
-    wire [9:0] t_p   = {1'b0, t_lo} + {1'b0, t_hi};
-    wire [9:0] t_gap = (clk2_div <= 8'd7) ? t_p : ({1'b0, t_lo} + {t_lo, 1'b0});
+    // ---- SCK_S timing (C81), registered: the values of the current clk2_div --------------
+    wire [8:0] nx_lo  = {1'b0, clk2_div_nx} + 9'd1;
+    wire [8:0] nx_hi  = (clk2_div_nx >= 8'd7) ? nx_lo : (9'd15 - {1'b0, clk2_div_nx});
+    wire [9:0] nx_p   = {1'b0, nx_lo} + {1'b0, nx_hi};
+    wire [9:0] nx_gap = (clk2_div_nx <= 8'd7) ? nx_p : ({1'b0, nx_lo} + {nx_lo, 1'b0});
+    reg  [8:0] t_lo, t_hi;
+    reg  [9:0] t_p, t_gap;
+    always @(posedge clk) begin
+        if (rst) begin
+            t_lo <= 9'd16;  t_hi <= 9'd16;  t_p <= 10'd32;  t_gap <= 10'd48;   // clk2_div 15
+        end else begin
+            t_lo <= nx_lo;  t_hi <= nx_hi;  t_p <= nx_p;  t_gap <= nx_gap;
+        end
+    end
 
     // ---- state ----------------------------------------------------------------------------
     reg [9:0]  cnt, cnt_n;
@@ -98,58 +110,49 @@ module tmc429_chain (
     reg [6:0]  bits_n;
     reg        req_n;
     reg [2:0]  stepped, stepped_n;
-    reg [23:0] snap_w;
+    reg [23:0] snap_w;                  // slots {2, 1, 0}; slot 0 = current motor
     reg [8:0]  snap_is;
     reg [2:0]  snap_dir, snap_step, snap_pol;
-    reg [5:0]  cfg;
+    reg [5:0]  cfg, dac;
+    reg        cov_sel, cov_bit;
     reg        nxm, nxm_n;
     reg [5:0]  cov_pos;
     reg [4:0]  cov_len;
     reg [23:0] cov_data;
     reg [9:0]  cupd0, cupd1, cupd2;
-    reg        cover_busy_n, dgw_busy_n, start;
+    reg        cover_busy_n, dgw_busy_n, start, shift;
     reg [47:0] readback_n;
 
     // ---- RAM reads ahead of a bit (C80) ------------------------------------------------------
     wire       pre_bit  = (state == SETUP) | (state == HIGH) | (state == GAP);
-    wire       rd_cfg   = pre_bit & (cnt == 10'd3);
-    wire       rd_lut   = pre_bit & (cnt == 10'd2);
+    wire       rd_cfg   = pre_bit & (cnt == 10'd4);
+    wire       rd_lut   = pre_bit & (cnt == 10'd3);
+    wire       pre_dac  = pre_bit & (cnt == 10'd2);
     wire [5:0] cfg_cell = (state == HIGH) ? cidx + 6'd1 : cidx;
 
-    reg [7:0] w_m;
-    reg [2:0] is_m;
-    always @(*) begin
-        case (motor)
-        2'd0:    begin w_m = snap_w[7:0];   is_m = snap_is[2:0]; end
-        2'd1:    begin w_m = snap_w[15:8];  is_m = snap_is[5:3]; end
-        default: begin w_m = snap_w[23:16]; is_m = snap_is[8:6]; end
-        endcase
-    end
-    wire m0 = (motor == 2'd0), m1 = (motor == 2'd1), m2 = ~m0 & ~m1;
-    wire dir_m  = (m0 & snap_dir[0])  | (m1 & snap_dir[1])  | (m2 & snap_dir[2]);
-    wire step_m = (m0 & snap_step[0]) | (m1 & snap_step[1]) | (m2 & snap_step[2]);
-
-    wire [5:0] lut_idx;
+    wire [5:0] lut_idx, dac_nx;
     wire       sig_bit;
     tmc429_microstep u_ustep (
-        .w(w_m), .coil_b(ram_q[3]), .lut_idx(lut_idx),
-        .code(cfg[4:0]), .lut(ram_q), .i_scale(is_m),
-        .negative(dir_m), .step(step_m),
+        .w(snap_w[7:0]), .coil_b(ram_q[3]), .lut_idx(lut_idx),
+        .lut(ram_q), .i_scale(snap_is[2:0]), .dac(dac_nx),
+        .code(cfg[4:0]), .dac_q(dac), .negative(snap_dir[0]), .step(snap_step[0]),
         .pol_ph_ab(snap_pol[0]), .pol_fd_ab(snap_pol[1]), .pol_dac_ab(snap_pol[2]),
         .bit_out(sig_bit));
 
     assign ram_re   = run & spi_mode & (rd_cfg | rd_lut);
     assign ram_addr = rd_cfg ? {1'b0, cfg_cell} : {1'b1, lut_idx};
 
-    // ---- cover (C85): positions cover_pos <= k < cover_pos + len carry data[len-1-(k-pos)]
+    // ---- cover (C85): positions cover_pos <= k < cover_pos + len carry data[len-1-(k-pos)];
+    // decided at cnt = 2 (bits does not change before the LOW entry)
     wire [6:0] cov_d   = bits - {1'b0, cov_pos};
     wire       cov_in  = cover_busy & (bits >= {1'b0, cov_pos}) & (cov_d < {2'b0, cov_len});
     wire [4:0] cov_i   = cov_len - 5'd1 - cov_d[4:0];
-    wire       bit_now = cov_in ? cov_data[cov_i] : sig_bit;
+    wire       bit_now = cov_sel ? cov_bit : sig_bit;
 
     // ---- requests (C83) ---------------------------------------------------------------------
     wire [2:0] cu_tick = ramp_tick & {3{cont_update}};
-    wire [2:0] wrap    = cu_tick & {cupd2 == 10'd1023, cupd1 == 10'd1023, cupd0 == 10'd1023};
+    reg  [2:0] cupd_top;                // counter at 1023 (registered compare)
+    wire [2:0] wrap    = cu_tick & cupd_top;
     wire       request = req | (|step) | cw | (|wrap);
     wire [1:0] lsmd_e  = (lsmd == 2'd3) ? 2'd2 : lsmd;       // C86: LSMD 3 acts as 2
 
@@ -159,7 +162,7 @@ module tmc429_chain (
         req_n = req;  stepped_n = stepped;  nxm_n = nxm;
         cover_busy_n = cover_busy;  dgw_busy_n = dgw_busy;  readback_n = readback;
         cs_n = cs;  sck_n = sck;  sdo_n = sdo;
-        start = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
+        start = 1'b0;  shift = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
         if (run) begin
             if (!spi_mode) begin
                 if (state != IDLE || cs || req || stepped != 3'd0) begin
@@ -196,7 +199,7 @@ module tmc429_chain (
                                 state_n = HOLD;  cnt_n = t_p;
                             end else begin
                                 motor_n = motor + 2'd1;  cidx_n = cidx + 6'd1;
-                                state_n = GAP;  cnt_n = t_gap;
+                                state_n = GAP;  cnt_n = t_gap;  shift = 1'b1;
                             end
                         end else begin
                             cidx_n = cidx + 6'd1;
@@ -237,7 +240,7 @@ module tmc429_chain (
             req <= 1'b0;  stepped <= 3'd0;  nxm <= 1'b0;
             cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
             cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b0;
-            cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;
+            cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;  cupd_top <= 3'd0;
         end else begin
             state <= state_n;  cnt <= cnt_n;  cidx <= cidx_n;  motor <= motor_n;
             bits <= bits_n;  req <= req_n;  stepped <= stepped_n;  nxm <= nxm_n;
@@ -247,11 +250,14 @@ module tmc429_chain (
                 cupd0 <= cupd0 + {9'd0, cu_tick[0]};
                 cupd1 <= cupd1 + {9'd0, cu_tick[1]};
                 cupd2 <= cupd2 + {9'd0, cu_tick[2]};
+                cupd_top <= {cupd2 + {9'd0, cu_tick[2]} == 10'd1023,
+                             cupd1 + {9'd0, cu_tick[1]} == 10'd1023,
+                             cupd0 + {9'd0, cu_tick[0]} == 10'd1023};
             end
         end
     end
 
-    // snapshot, cover latch, configuration cidx: no reset needed (written before use)
+    // snapshot, cover latch, bit pipeline: no reset needed (written before use)
     always @(posedge clk) begin
         if (start) begin
             snap_w    <= ustep;
@@ -262,9 +268,20 @@ module tmc429_chain (
             cov_pos   <= cover_pos;
             cov_len   <= (cover_len > 5'd24) ? 5'd24 : cover_len;
             cov_data  <= cover_datagram;
+        end else if (shift) begin
+            // the NxM gap: the next motor's snapshot moves to slot 0
+            snap_w    <= {snap_w[23:16], snap_w[23:8]};
+            snap_is   <= {snap_is[8:6], snap_is[8:3]};
+            snap_dir  <= {snap_dir[2], snap_dir[2:1]};
+            snap_step <= {snap_step[2], snap_step[2:1]};
         end
         if (run & spi_mode & rd_lut)
             cfg <= ram_q;
+        if (run & spi_mode & pre_dac) begin
+            dac     <= dac_nx;
+            cov_sel <= cov_in;
+            cov_bit <= cov_data[cov_i];
+        end
     end
 endmodule
 

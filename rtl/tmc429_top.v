@@ -156,10 +156,11 @@ module tmc429_top #(
     wire       sd_nx    = (CHIP != 0) & ifconf_nx[5];
 
     // ramp ticks (C40): phase 30 of the frames whose low ramp_div bits are all 1, i.e. whose
-    // number of trailing ones (shared by the motors) is at least ramp_div
+    // number of trailing ones (shared by the motors) is at least ramp_div. The count is
+    // registered: the frame number of the phase-30 edge is the one of the edge before.
     wire [14:0] frame = prescaler[19:5];
     wire        ph30  = run & (prescaler[4:0] == 5'd30);
-    reg  [3:0]  frame_ones;
+    reg  [3:0]  frame_ones, frame_ones_q;
     integer     fi;
     always @(*) begin
         frame_ones = 4'd15;
@@ -167,9 +168,15 @@ module tmc429_top #(
             if (!frame[fi])
                 frame_ones = fi[3:0];
     end
-    wire [2:0]  ramp_tick = {ph30 & (frame_ones >= drv_m2[23:20]),
-                             ph30 & (frame_ones >= drv_m1[23:20]),
-                             ph30 & (frame_ones >= drv_m0[23:20])};
+    always @(posedge clk) begin
+        if (rst)
+            frame_ones_q <= 4'd0;
+        else
+            frame_ones_q <= frame_ones;
+    end
+    wire [2:0]  ramp_tick = {ph30 & (frame_ones_q >= drv_m2[23:20]),
+                             ph30 & (frame_ones_q >= drv_m1[23:20]),
+                             ph30 & (frame_ones_q >= drv_m0[23:20])};
 
     // current scaling (C75-C77); the TMC4210 has none
     wire [2:0] is0, is1, is2;
@@ -203,7 +210,7 @@ module tmc429_top #(
         .step(m_step), .dir(m_dir),
         .ustep({probe_m2_ustep, probe_m1_ustep, probe_m0_ustep}),
         .i_scale({is2, is1, is0}), .ramp_tick(ramp_tick),
-        .clk2_div(gconf[15:8]), .lsmd(gconf[1:0]),
+        .clk2_div_nx(gconf_nx[15:8]), .lsmd(gconf[1:0]),
         .pol_ph_ab(gconf[4]), .pol_fd_ab(gconf[5]), .pol_dac_ab(gconf[6]),
         .cont_update(gconf[16]), .cw(cw), .dgw(dgw),
         .cover_pos(cover_pos), .cover_len(cover_len), .cover_datagram(cover_datagram),

@@ -8,9 +8,10 @@
 //! Frame of one datagram (C82), with LO/HI the SCK_S low/high half periods and P = LO + HI:
 //!
 //! RAM reads (C80): the state before a bit's LOW entry (SETUP, HIGH or GAP) is at least 8 edges
-//! long; at its edge with 3 edges left the bit's configuration cell is read, at the edge with 2
+//! long; at its edge with 4 edges left the bit's configuration cell is read, at the edge with 3
 //! left the LUT cell its code needs, each from that edge's old state (one read per edge, so the
-//! RTL's synchronous RAM read port needs no write forwarding).
+//! RTL's synchronous RAM read port needs no write forwarding, and the RTL has two more edges to
+//! scale the LUT value and form the bit).
 //! ```text
 //! IDLE ──request──► SETUP (CS active, SCK high, P edges)
 //!   ► LOW (bit on SDO_S, SCK low, LO edges) ► HIGH (SCK high, SDI_S sampled at its first edge,
@@ -80,9 +81,9 @@ pub struct Chain {
     pub snap_dir: u8,
     pub snap_step: u8,
     pub snap_pol: Polarity,
-    /// Configuration cell of the next bit, read 3 edges before its LOW entry (C80).
+    /// Configuration cell of the next bit, read 4 edges before its LOW entry (C80).
     pub cfg: u8,
-    /// LUT cell the next bit's code needs, read 2 edges before its LOW entry (C80).
+    /// LUT cell the next bit's code needs, read 3 edges before its LOW entry (C80).
     pub lut: u8,
     /// NxM bit of the cell of the bit being sent (from `cfg`, taken at its LOW entry).
     pub nxm: bool,
@@ -250,7 +251,7 @@ impl Chain {
     /// one edge left and no RAM read due (C80).
     #[inline]
     pub fn counting_only(&self) -> bool {
-        self.state != IDLE && (self.cnt > 3 || (self.cnt > 1 && !matches!(self.state, SETUP | HIGH | GAP)))
+        self.state != IDLE && (self.cnt > 4 || (self.cnt > 1 && !matches!(self.state, SETUP | HIGH | GAP)))
     }
 
     /// The edge of a busy chain that only counts (fast path of `Tmc429::tick`; the caller has
@@ -262,16 +263,16 @@ impl Chain {
         }
     }
 
-    /// The RAM reads ahead of a bit (C80), in SETUP, HIGH and GAP: 3 edges before the LOW
+    /// The RAM reads ahead of a bit (C80), in SETUP, HIGH and GAP: 4 edges before the LOW
     /// entry the configuration cell of the next bit (the current cell in SETUP and GAP, the
-    /// following one in HIGH), 2 edges before it the LUT cell that cell's code needs for the
+    /// following one in HIGH), 3 edges before it the LUT cell that cell's code needs for the
     /// current motor. Each reads the RAM of the edge's old state.
     #[inline]
     fn fetch(&mut self, ram: &[u8; 128]) {
         match (self.state, self.cnt) {
-            (SETUP | GAP, 3) => self.cfg = ram[self.cell as usize & 63],
-            (HIGH, 3) => self.cfg = ram[(self.cell as usize + 1) & 63],
-            (SETUP | HIGH | GAP, 2) => {
+            (SETUP | GAP, 4) => self.cfg = ram[self.cell as usize & 63],
+            (HIGH, 4) => self.cfg = ram[(self.cell as usize + 1) & 63],
+            (SETUP | HIGH | GAP, 3) => {
                 let m = (self.motor as usize).min(2);
                 self.lut = ram[microstep::lut_cell(self.snap_w[m], self.cfg)];
             }

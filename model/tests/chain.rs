@@ -434,8 +434,8 @@ fn bit_at(c: &mut tmc429_model::Tmc429, bits: u8) -> bool {
     c.outputs().sdo_s
 }
 
-/// C80: the configuration cell of a bit is read at the edge with 3 edges left in the state before
-/// its LOW entry, the LUT cell at the edge with 2 left; a RAM write before such an edge is seen,
+/// C80: the configuration cell of a bit is read at the edge with 4 edges left in the state before
+/// its LOW entry, the LUT cell at the edge with 3 left; a RAM write before such an edge is seen,
 /// one after it is not.
 #[test]
 fn ram_read_edges_of_a_bit() {
@@ -443,22 +443,22 @@ fn ram_read_edges_of_a_bit() {
     // Bit 0, cell 0 = Zero ($10). Rewritten as One ($11) before the configuration read: seen.
     let mut c = chip_with_request();
     assert!(!bit_at(&mut c.clone(), 0), "Table 11-2 cell 0 is Zero");
-    run_to(&mut c, SETUP, 3, 0);
+    run_to(&mut c, SETUP, 4, 0);
     c.write_register(ram_a7(0), 0x05 << 8 | 0x11);
-    assert!(bit_at(&mut c, 0), "written before the edge with cnt 3: One is sent");
+    assert!(bit_at(&mut c, 0), "written before the edge with cnt 4: One is sent");
     // ... and after it: the cell read before the write is sent.
     let mut c = chip_with_request();
-    run_to(&mut c, SETUP, 2, 0);
+    run_to(&mut c, SETUP, 3, 0);
     c.write_register(ram_a7(0), 0x05 << 8 | 0x11);
     assert!(!bit_at(&mut c, 0), "written after the configuration read: Zero is sent");
     // Bit 1, cell 1 = DAC_A bit 5 ($05): w = 0 reads LUT[0] = 0. LUT[0] := 63 before the LUT
-    // read (edge with 2 left in HIGH of bit 0): seen; after it: not.
+    // read (edge with 3 left in HIGH of bit 0): seen; after it: not.
     let mut c = chip_with_request();
-    run_to(&mut c, HIGH, 2, 1);
+    run_to(&mut c, HIGH, 3, 1);
     c.write_register(ram_a7(32), 2 << 8 | 63);
     assert!(bit_at(&mut c, 1), "LUT written before its read: DAC_A bit 5 = 1");
     let mut c = chip_with_request();
-    run_to(&mut c, HIGH, 1, 1);
+    run_to(&mut c, HIGH, 2, 1);
     c.write_register(ram_a7(32), 2 << 8 | 63);
     assert!(!bit_at(&mut c, 1), "LUT written after its read: DAC_A bit 5 = 0");
 }
