@@ -27,6 +27,12 @@ enum Command {
     Vectors(cmd::vectors::Args),
     /// TMCL module layer: serve a virtual TMCM-3110, assemble and run TMCL programs.
     Tmcl(cmd::tmcl::Args),
+    /// Run a scenario file (docs/scenarios.md) and check its expectations.
+    Run(cmd::run::Args),
+    /// The three-axis demo: co-simulated, with VCD, GTKWave view, plots and a summary.
+    Demo(cmd::demo::Args),
+    /// Registers from speed and acceleration, or Hz, Hz/s and braking distance from registers.
+    Calc(cmd::calc::Args),
 }
 
 /// Exit status of a command.
@@ -53,6 +59,9 @@ fn main() -> ExitCode {
         Command::Cosim(a) => cmd::cosim::run(a),
         Command::Tmcl(a) => cmd::tmcl::run(a),
         Command::Vectors(a) => cmd::vectors::run(a),
+        Command::Run(a) => cmd::run::run(a),
+        Command::Demo(a) => cmd::demo::run(a),
+        Command::Calc(a) => cmd::calc::run(a),
     };
     match res {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,

@@ -19,7 +19,7 @@ fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
 }
 
-/// The README's main command: the bundled example script (TMC428 §6.5 / TMC429 §6.2.3 examples).
+/// The README's datasheet example: the bundled example script (TMC428 §6.5 / TMC429 §6.2.3 examples).
 #[test]
 fn bundled_example() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/spi/datasheet.spi");

@@ -60,3 +60,55 @@ pub fn read_input(path: Option<&std::path::Path>) -> Result<(String, String), cr
         }
     }
 }
+
+/// Progress of a long run on stderr: shown only when stderr is a terminal and the run has
+/// taken more than a second; the line is cleared at the end.
+pub struct Progress {
+    label: String,
+    start: std::time::Instant,
+    last: Option<std::time::Instant>,
+    tty: bool,
+}
+
+impl Progress {
+    pub fn new(label: &str) -> Progress {
+        use std::io::IsTerminal;
+        Progress { label: label.to_string(), start: std::time::Instant::now(), last: None, tty: std::io::stderr().is_terminal() }
+    }
+
+    /// `done` of `total` CLK cycles.
+    pub fn update(&mut self, done: u64, total: u64) {
+        if !self.tty {
+            return;
+        }
+        let now = std::time::Instant::now();
+        let t = now.duration_since(self.start).as_secs_f64();
+        if t < 1.0 || self.last.is_some_and(|l| now.duration_since(l).as_millis() < 200) {
+            return;
+        }
+        self.last = Some(now);
+        let pct = if total == 0 { 100.0 } else { 100.0 * done as f64 / total as f64 };
+        eprint!("\r{}: {pct:5.1} % ({done} of {total} cycles, {t:.1} s)\x1b[K", self.label);
+    }
+
+    pub fn finish(&mut self) {
+        if self.tty && self.last.is_some() {
+            eprint!("\r\x1b[K");
+        }
+    }
+}
+
+/// Checks that an output file can be created (before a long run), without leaving it behind.
+pub fn check_output(opt: &str, p: &std::path::Path) -> Result<(), crate::UserError> {
+    let dir = match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    if !dir.is_dir() {
+        return Err(crate::UserError(format!("{opt} {}: directory {} does not exist", p.display(), dir.display())));
+    }
+    let probe = tmc429_scenario::run::tmp_path(p);
+    std::fs::File::create(&probe).map_err(|e| crate::UserError(format!("{opt} {}: cannot write: {e}", p.display())))?;
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
+}

@@ -1,7 +1,10 @@
 //! One module per subcommand.
+pub mod calc;
 pub mod common;
+pub mod demo;
 pub mod cosim;
 pub mod regmap;
+pub mod run;
 pub mod spi;
 pub mod tmcl;
 pub mod vectors;

@@ -1,0 +1,209 @@
+//! VCD of a scenario run: the input pins and the engine's output pins and probes under the
+//! scope names of ARCHITECTURE.md (`top`, `motor0..2`, `chain`), the µC's SPI frames decoded as
+//! strings (`spi.transaction`), and with `--engine cosim` the RTL's side (`rtl.…`) and
+//! `cosim.mismatch`. Time unit 1 ps, one CLK period per edge (from fclk); the inputs of edge n
+//! change at (n − ½)·T, the outputs after it at n·T, as in `tmc429 cosim`'s VCD.
+//!
+//! Long runs: `top.clk` and `top.prescaler` change every cycle and are left out (the time axis
+//! is the clock: one period per edge), so that the file grows with activity, not with time.
+
+use std::fs::File;
+use std::io::{self, BufWriter, Write};
+use std::path::Path;
+
+use vcd::{IdCode, TimescaleUnit, Value, VarType, Writer};
+
+use tmc429_model::{Inputs, Outputs, Probes};
+use tmc429_testbench::signals::{flatten, N_SIGNALS, SIGNALS};
+
+/// The input pins in the VCD's `top` scope.
+pub const INPUT_NAMES: [&str; 10] =
+    ["nscs_c", "sck_c", "sdi_c", "sdi_s", "ref1", "ref2", "ref3", "refr1", "refr2", "refr3"];
+
+/// Signals of [`SIGNALS`] not written (they change every cycle).
+pub const SKIPPED: [&str; 1] = ["prescaler"];
+
+fn input_bits(i: &Inputs) -> [bool; 10] {
+    [i.nscs_c, i.sck_c, i.sdi_c, i.sdi_s, i.ref1, i.ref2, i.ref3, i.refr1, i.refr2, i.refr3]
+}
+
+const SCOPES: [&str; 5] = ["top", "motor0", "motor1", "motor2", "chain"];
+
+/// Full names (`scope.name`) of every variable the writer declares, for a run with or without
+/// the RTL side.
+pub fn variable_names(cosim: bool) -> Vec<String> {
+    let mut v: Vec<String> = INPUT_NAMES.iter().map(|n| format!("top.{n}")).collect();
+    let sig = |prefix: &str| {
+        SIGNALS
+            .iter()
+            .filter(|s| !SKIPPED.contains(&s.name))
+            .map(|s| format!("{prefix}{}.{}", s.scope, s.name))
+            .collect::<Vec<_>>()
+    };
+    v.extend(sig(""));
+    v.push("spi.transaction".into());
+    if cosim {
+        v.extend(sig("rtl."));
+        v.push("cosim.mismatch".into());
+    }
+    v
+}
+
+pub struct VcdWriter {
+    w: Writer<BufWriter<File>>,
+    period: u64,
+    inputs: [IdCode; 10],
+    a: [Option<IdCode>; N_SIGNALS],
+    b: Option<[Option<IdCode>; N_SIGNALS]>,
+    mismatch: Option<IdCode>,
+    txn: IdCode,
+    last_in: Option<[bool; 10]>,
+    last_a: Option<[u64; N_SIGNALS]>,
+    last_b: Option<[u64; N_SIGNALS]>,
+    last_mismatch: bool,
+}
+
+fn add_signals(
+    w: &mut Writer<BufWriter<File>>,
+    mut extra: impl FnMut(&mut Writer<BufWriter<File>>) -> io::Result<()>,
+) -> io::Result<[Option<IdCode>; N_SIGNALS]> {
+    let mut ids = [None; N_SIGNALS];
+    for scope in SCOPES {
+        w.add_module(scope)?;
+        if scope == "top" {
+            extra(w)?;
+        }
+        for (k, s) in SIGNALS.iter().enumerate() {
+            if s.scope == scope && !SKIPPED.contains(&s.name) {
+                ids[k] = Some(w.add_wire(s.width, s.name)?);
+            }
+        }
+        w.upscope()?;
+    }
+    Ok(ids)
+}
+
+impl VcdWriter {
+    /// Creates the file and writes the header; `cosim` adds the RTL side and the mismatch flag.
+    pub fn create(path: &Path, fclk_hz: u64, title: &str, cosim: bool) -> io::Result<VcdWriter> {
+        let f = File::create(path)?;
+        let mut w = Writer::new(BufWriter::with_capacity(1 << 20, f));
+        w.comment(title)?;
+        w.timescale(1, TimescaleUnit::PS)?;
+        let mut inputs = [IdCode::FIRST; 10];
+        let a = add_signals(&mut w, |w| {
+            for (k, n) in INPUT_NAMES.iter().enumerate() {
+                inputs[k] = w.add_wire(1, n)?;
+            }
+            Ok(())
+        })?;
+        w.add_module("spi")?;
+        let txn = w.add_var(VarType::String, 1, "transaction", None)?;
+        w.upscope()?;
+        let (b, mismatch) = if cosim {
+            w.add_module("rtl")?;
+            let b = add_signals(&mut w, |_| Ok(()))?;
+            w.upscope()?;
+            w.add_module("cosim")?;
+            let m = w.add_wire(1, "mismatch")?;
+            w.upscope()?;
+            (Some(b), Some(m))
+        } else {
+            (None, None)
+        };
+        w.enddefinitions()?;
+        Ok(VcdWriter {
+            w,
+            period: tmc429_testbench::rtl::period_ps(fclk_hz),
+            inputs,
+            a,
+            b,
+            mismatch,
+            txn,
+            last_in: None,
+            last_a: None,
+            last_b: None,
+            last_mismatch: false,
+        })
+    }
+
+    fn put(w: &mut Writer<BufWriter<File>>, id: IdCode, width: u32, v: u64) -> io::Result<()> {
+        if width == 1 {
+            w.change_scalar(id, if v & 1 == 1 { Value::V1 } else { Value::V0 })
+        } else {
+            w.change_vector(id, (0..width).rev().map(|b| if v >> b & 1 == 1 { Value::V1 } else { Value::V0 }))
+        }
+    }
+
+    /// Records edge `n` (0-based): its inputs and the state after it; `b` is the RTL's side.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tick(
+        &mut self,
+        n: u64,
+        inp: &Inputs,
+        mo: &Outputs,
+        mp: &Probes,
+        b: Option<(&Outputs, &Probes)>,
+        mismatch: bool,
+        txn: Option<&str>,
+    ) -> io::Result<()> {
+        let bits = input_bits(inp);
+        if self.last_in != Some(bits) {
+            self.w.timestamp(n * self.period + self.period / 2)?;
+            for k in 0..10 {
+                if self.last_in.is_none_or(|l| l[k] != bits[k]) {
+                    Self::put(&mut self.w, self.inputs[k], 1, bits[k] as u64)?;
+                }
+            }
+            self.last_in = Some(bits);
+        }
+        let mut fa = flatten(mo, mp);
+        let mut fb = b.map(|(o, p)| flatten(o, p));
+        // left-out signals must not count as changes
+        for k in 0..N_SIGNALS {
+            if self.a[k].is_none() {
+                fa[k] = 0;
+                if let Some(x) = fb.as_mut() {
+                    x[k] = 0;
+                }
+            }
+        }
+        let changed = self.last_a != Some(fa) || (fb.is_some() && self.last_b != fb) || mismatch != self.last_mismatch || txn.is_some();
+        if !changed {
+            return Ok(());
+        }
+        self.w.timestamp((n + 1) * self.period)?;
+        for k in 0..N_SIGNALS {
+            let wdt = SIGNALS[k].width;
+            if let Some(id) = self.a[k] {
+                if self.last_a.is_none_or(|l| l[k] != fa[k]) {
+                    Self::put(&mut self.w, id, wdt, fa[k])?;
+                }
+            }
+            if let (Some(ids), Some(fb)) = (&self.b, &fb) {
+                if let Some(id) = ids[k] {
+                    if self.last_b.is_none_or(|l| l[k] != fb[k]) {
+                        Self::put(&mut self.w, id, wdt, fb[k])?;
+                    }
+                }
+            }
+        }
+        self.last_a = Some(fa);
+        self.last_b = fb;
+        if let Some(id) = self.mismatch {
+            if mismatch != self.last_mismatch || n == 0 {
+                Self::put(&mut self.w, id, 1, mismatch as u64)?;
+            }
+            self.last_mismatch = mismatch;
+        }
+        if let Some(t) = txn {
+            let s: String = t.chars().map(|c| if c.is_whitespace() { '_' } else { c }).collect();
+            self.w.change_string(self.txn, &s)?;
+        }
+        Ok(())
+    }
+
+    pub fn finish(mut self) -> io::Result<()> {
+        self.w.writer().flush()
+    }
+}
