@@ -5,6 +5,10 @@
 // bits 11..6, as a RAM datagram addresses them (TMC428 Table 10-1). The array has no reset
 // (it maps to a RAM). The power-on contents come from a ROM: a resettable flag per word
 // says whether the word was written since reset; until then a read returns the ROM value.
+// Two read ports on the same array (an FPGA maps it as two RAM copies written together):
+// port 1 (µC reads) is combinational on its address; port 2 (driver chain, C80) addresses
+// one 6-bit cell and is synchronous with a read enable: `rdata2` is the cell as it was
+// before the last edge with `re2` (a write in that edge is not seen).
 // ROM (CHIP = 1, TMC429): cells 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD
 // positions (TMC429 §11.4.2), cells 36..63 = 0, cells 64..127 = the sine table of TMC428
 // Table 12-2, y(i) = min(63, int(1/2 + 64 sin(pi i / 128))). CHIP = 0, 2: all 0.
@@ -19,7 +23,10 @@ module tmc429_ram #(
     input  wire [5:0]  waddr,
     input  wire [11:0] wdata,
     input  wire [5:0]  raddr,
-    output wire [11:0] rdata
+    output wire [11:0] rdata,
+    input  wire        re2,
+    input  wire [6:0]  raddr2,     // cell 0..127
+    output wire [5:0]  rdata2
 );
     reg [11:0] mem [0:63];
     reg [63:0] written;
@@ -98,6 +105,26 @@ module tmc429_ram #(
 
     wire [11:0] rom = (CHIP == 1) ? rom_word(raddr) : 12'h000;
     assign rdata = written[raddr] ? mem[raddr] : rom;
+
+    // ---- port 2 -----------------------------------------------------------------------
+    reg [11:0] q2;
+    reg        w2;
+    reg [6:0]  a2;
+    always @(posedge clk) begin
+        if (re2)
+            q2 <= mem[raddr2[6:1]];
+    end
+    always @(posedge clk) begin
+        if (rst) begin
+            w2 <= 1'b0;
+            a2 <= 7'd0;
+        end else if (re2) begin
+            w2 <= written[raddr2[6:1]];
+            a2 <= raddr2;
+        end
+    end
+    wire [11:0] word2 = w2 ? q2 : ((CHIP == 1) ? rom_word(a2[6:1]) : 12'h000);
+    assign rdata2 = a2[0] ? word2[11:6] : word2[5:0];
 endmodule
 
 `default_nettype wire

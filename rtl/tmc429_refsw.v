@@ -5,9 +5,8 @@
 // mot1r = 0: Ln = REFn, and on the TMC429 with en_refr = 1 Rn = REFRn, else no right
 // switches. mot1r = 1: L1 = REF1, L2 = REF2, R1 = REF3, motor 3 has no switches. A missing
 // switch reads inactive (0). TMC4210: L1 = REF_L (REF1), L2 = GP_IN (REF2), R1 = REF_R
-// (REF3) with mot1r = 1, no refmux and no REFR inputs. refmux = 1 samples the switches through the 74HC157 on
-// nSCS_S, which belongs to the driver chain; until the chain is built L and R read 0 with
-// refmux = 1 (the co-simulation keeps refmux = 0, see docs/cosim.md).
+// (REF3) with mot1r = 1, no refmux and no REFR inputs. refmux = 1 (TMC428, TMC429): the
+// switches are the ones sampled through the 74HC157 on nSCS_S (tmc429_drvpins, C87).
 `default_nettype none
 
 module tmc429_refsw #(
@@ -19,6 +18,7 @@ module tmc429_refsw #(
     input  wire       en_refr,
     input  wire       refmux,
     input  wire       mot1r,
+    input  wire [5:0] mux_sw,   // sampled switches: bit 2m = R(m+1), bit 2m+1 = L(m+1)
     output reg  [2:0] l,        // L3..L1
     output reg  [2:0] r         // R3..R1
 );
@@ -31,8 +31,8 @@ module tmc429_refsw #(
             l = {1'b0, rf[1], rf[0]};
             r = {2'b00, rf[2] & mot1r};
         end else if (refmux) begin
-            l = 3'b000;
-            r = 3'b000;
+            l = {mux_sw[5], mux_sw[3], mux_sw[1]};
+            r = {mux_sw[4], mux_sw[2], mux_sw[0]};
         end else if (mot1r) begin
             l = {1'b0, rf[1], rf[0]};
             r = {2'b00, rf[2]};

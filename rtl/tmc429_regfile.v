@@ -1,5 +1,7 @@
 // tmc429_regfile: the register file and the motion core (docs/model-contract.md C20-C31,
-// C40-C66; TMC428 §7-§9, TMC429 §8) without the driver chain behind it.
+// C40-C66; TMC428 §7-§9, TMC429 §8). The driver side (tmc429_chain, _current, _stepdir,
+// _drvpins) takes its configuration from the `drv_*` ports and hands back the chain's
+// handshake (C85, C88, C89), readback (C87) and the multiplexed switches (C87).
 //
 // Executes the 32-bit datagram `cmd` when `exec` pulses (C12), serves the read port of the
 // SPI slave (data of the old state), builds the status byte, the interrupt output, the
@@ -36,7 +38,29 @@ module tmc429_regfile #(
     output wire [23:0] p_ustep,
     output wire [32:0] p_pulse_acc,
     output wire [2:0]  p_step,
-    output wire [2:0]  p_dir
+    output wire [2:0]  p_dir,
+    // driver side: configuration (old state, and new state for the output pin registers)
+    output wire [23:0] drv_gconf,      // $7E as stored: mot1r refmux 000 cont_update clk2_div bits 7..0
+    output wire [23:0] drv_gconf_nx,
+    output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
+    output wire [8:0]  drv_ifconf_nx,
+    output wire [71:0] drv_conf,       // motor m in [24m+23:24m]: {ramp_div, is_*, a_threshold}
+    output wire        drv_cw,         // cover datagram waiting
+    output wire        drv_dgw,        // datagram-word write waiting
+    output wire [5:0]  drv_cover_pos,
+    output wire [4:0]  drv_cover_len,
+    output wire [23:0] drv_cover_datagram,
+    // driver side: chain handshake and state
+    input  wire        chain_take,     // a datagram starts: cw and dgw taken
+    input  wire        chain_ret_cw,   // SPI mode left: a taken cover returns to waiting
+    input  wire        chain_ret_dgw,
+    input  wire        chain_cover_busy,
+    input  wire        chain_dgw_busy,
+    input  wire [47:0] chain_readback,
+    input  wire [5:0]  mux_sw,         // switches sampled through the 74HC157
+    input  wire        chain_ram_re,   // chain read port of the RAM (C80)
+    input  wire [6:0]  chain_ram_addr,
+    output wire [5:0]  chain_ram_q
 );
     localparam HAS_CHAIN = (CHIP != 2);   // JDX 0..3 (driver chain), TMC4210: absent
     localparam HAS_429   = (CHIP != 0);   // JDX 4, 5, 6, 9
@@ -73,7 +97,7 @@ module tmc429_regfile #(
     tmc429_refsw #(.CHIP(CHIP)) u_refsw (
         .ref_q(ref_q), .refr_q(refr_q),
         .inv_ref(if_conf[0]), .en_refr(if_conf[8]), .refmux(refmux), .mot1r(mot1r),
-        .l(sw_l), .r(sw_r));
+        .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
 
     // ---- frame schedule (C40, C41) ----------------------------------------------------
     // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div
@@ -121,7 +145,8 @@ module tmc429_regfile #(
                 .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]),
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
                 .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
-                .step(p_step[g]), .dir(p_dir[g]));
+                .step(p_step[g]), .dir(p_dir[g]),
+                .drv_conf(drv_conf[24*g+23:24*g]));
         end
     endgenerate
 
@@ -153,10 +178,28 @@ module tmc429_regfile #(
 `ifdef PLANT_BUG_STATUS
     // Planted bug for the co-simulation self-test (testbench/tests/planted_bug.rs):
     // CDGW forgets the datagram-waiting flag of a datagram_low/high write.
-    assign status  = {int_o, cw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
+    wire   cdgw    = cw | chain_cover_busy;
 `else
-    assign status  = {int_o, cw | dw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
+    // C88: CDGW = cw OR the datagram-word flag, each waiting or taken by the datagram under way
+    wire   cdgw    = cw | dw | chain_cover_busy | chain_dgw_busy;
 `endif
+    assign status  = {int_o, cdgw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
+
+    // ---- driver side ------------------------------------------------------------------
+    wire w_gconf  = wr_g & (jdx == 4'd15);
+    wire w_ifconf = wr_g & HAS_429 & (jdx == 4'd4);
+    assign drv_gconf     = {2'd0, mot1r, refmux, 3'd0, cont_update, clk2_div, gp_low};
+    assign drv_gconf_nx  = w_gconf
+        ? ((CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
+                       : {2'd0, wdata[21:20], 3'd0, wdata[16:0]})
+        : drv_gconf;
+    assign drv_ifconf    = if_conf;
+    assign drv_ifconf_nx = w_ifconf ? wdata[8:0] : if_conf;
+    assign drv_cw        = cw;
+    assign drv_dgw       = dw;
+    assign drv_cover_pos = cover_pos;
+    assign drv_cover_len = cover_len;
+    assign drv_cover_datagram = cover_datagram;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -181,6 +224,14 @@ module tmc429_regfile #(
             pc_i <= ((pc_i & ~pc_w1c) | pc_event) & pc_m_nx;
             if (frame_start)
                 pd <= 1'b0;
+            // the chain's handshake first, a µC write of the same edge wins (C3, C88, C89)
+            if (chain_take) begin
+                cw <= 1'b0;
+                dw <= 1'b0;
+            end else begin
+                cw <= cw | chain_ret_cw;
+                dw <= dw | chain_ret_dgw;
+            end
             if (wr_g) begin
                 case (jdx)
                 4'd0, 4'd1: if (HAS_CHAIN) dw <= 1'b1;    // datagram_low/high: arm CDGW
@@ -217,7 +268,8 @@ module tmc429_regfile #(
     tmc429_ram #(.CHIP(CHIP)) u_ram (
         .clk(clk), .rst(rst),
         .we(wr_ram), .waddr(a7[5:0]), .wdata({wdata[13:8], wdata[5:0]}),
-        .raddr(rd_addr[5:0]), .rdata(ram_rdata));
+        .raddr(rd_addr[5:0]), .rdata(ram_rdata),
+        .re2(chain_ram_re), .raddr2(chain_ram_addr), .rdata2(chain_ram_q));
 
     // ---- read mux ---------------------------------------------------------------------
     always @(*) begin
@@ -232,8 +284,10 @@ module tmc429_regfile #(
             rd_data = m_present1 ? m_rdata[71:48] : 24'd0;
         end else begin
             case (rd_addr[3:0])
-            // datagram_low/high: the readback shift register belongs to the driver chain
-            4'd2:  rd_data = HAS_CHAIN ? {cw, 9'd0, cover_pos + 6'd1, 3'd0, cover_len} : 24'd0;
+            4'd0:  rd_data = HAS_CHAIN ? chain_readback[23:0] : 24'd0;    // datagram_low_word
+            4'd1:  rd_data = HAS_CHAIN ? chain_readback[47:24] : 24'd0;   // datagram_high_word
+            4'd2:  rd_data = HAS_CHAIN ? {cw | chain_cover_busy, 9'd0, cover_pos + 6'd1, 3'd0,
+                                          cover_len} : 24'd0;
             4'd3:  rd_data = HAS_CHAIN ? cover_datagram : 24'd0;
             4'd4:  rd_data = HAS_429 ? {15'd0, if_conf} : 24'd0;
             4'd5:  rd_data = HAS_429 ? pos_comp : 24'd0;

@@ -7,8 +7,8 @@
 //
 // Blocks present: synchronizers (C4), µC SPI slave (C10-C13), register file (C20-C31) with
 // the motion core (C40-C66: target velocity, ramp and pulse generators, switch stop, latch,
-// interrupts), RAM (C30). Not yet present: the driver chain; its pins and probes are driven
-// to their reset values.
+// interrupts), RAM (C30), and the driver side: current scaling (C75-C77), driver chain with
+// the microstep unit (C70-C74, C80-C89), Step/Dir (C91-C96), driver pins (C81, C87, C90).
 `default_nettype none
 
 module tmc429_top #(
@@ -65,9 +65,9 @@ module tmc429_top #(
 );
     // ---- synchronizers of the non-SPI inputs (C4) -----------------------------------------
     wire [2:0] ref_q, refr_q;
+    wire       sdi_s_q;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [6:0] in_h;    // history flops: the edge detectors live in the motion core
-    wire       sdi_s_q; // driver-chain readback: the chain is not built yet
     /* verilator lint_on UNUSEDSIGNAL */
 
     tmc429_sync #(.W(7), .RST(7'b1110000)) u_sync_in (
@@ -98,6 +98,19 @@ module tmc429_top #(
     wire [23:0] p_ustep;
     wire [32:0] p_pulse_acc;
     wire [2:0]  p_step, p_dir;
+    // driver side <-> register file (whole registers; the driver side uses some fields)
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [23:0] gconf, gconf_nx;
+    wire [8:0]  ifconf, ifconf_nx;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [71:0] drv_conf;
+    wire [23:0] drv_m0 = drv_conf[23:0], drv_m1 = drv_conf[47:24], drv_m2 = drv_conf[71:48];
+    wire [23:0] cover_datagram;
+    wire        cw, dgw, take, ret_cw, ret_dgw, cover_busy, dgw_busy, ram_re;
+    wire [5:0]  cover_pos, mux_sw, ram_q;
+    wire [4:0]  cover_len;
+    wire [47:0] readback;
+    wire [6:0]  ram_addr;
 
     tmc429_regfile #(.CHIP(CHIP)) u_regs (
         .clk(clk), .rst(rst),
@@ -108,7 +121,15 @@ module tmc429_top #(
         .poscmp_q(poscmp_q), .pd(pd), .prescaler(prescaler),
         .p_x_target(p_x_target), .p_x_actual(p_x_actual), .p_v(p_v),
         .p_v_target(p_v_target), .p_a_actual(p_a_actual), .p_ustep(p_ustep),
-        .p_pulse_acc(p_pulse_acc), .p_step(p_step), .p_dir(p_dir));
+        .p_pulse_acc(p_pulse_acc), .p_step(p_step), .p_dir(p_dir),
+        .drv_gconf(gconf), .drv_gconf_nx(gconf_nx), .drv_ifconf(ifconf),
+        .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf),
+        .drv_cw(cw), .drv_dgw(dgw), .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
+        .drv_cover_datagram(cover_datagram),
+        .chain_take(take), .chain_ret_cw(ret_cw), .chain_ret_dgw(ret_dgw),
+        .chain_cover_busy(cover_busy), .chain_dgw_busy(dgw_busy), .chain_readback(readback),
+        .mux_sw(mux_sw), .chain_ram_re(ram_re), .chain_ram_addr(ram_addr),
+        .chain_ram_q(ram_q));
 
     // ---- pins (C11, C90) --------------------------------------------------------------------
     // While a frame is active the pin carries the data bit, otherwise nINT (registered: INT
@@ -119,14 +140,120 @@ module tmc429_top #(
     assign sdoz_c_oe  = (CHIP == 0) ? 1'b0 : active;
     assign poscmp     = poscmp_q;
 
-    // driver chain not built yet: idle levels
-    assign nscs_s   = 1'b1;
-    assign sck_s    = 1'b1;
-    assign sdo_s    = 1'b0;
-    assign sdi_s_o  = 1'b0;
-    assign sdi_s_oe = 1'b0;
-    assign nscs2    = 1'b1;
-    assign nscs3    = 1'b1;
+    // ---- driver side (C70-C96) ------------------------------------------------------------
+    // Inputs from the motors: the signals behind probe_m*_step / _dir / _ustep /
+    // _v_internal / _a_actual (old state, C70).
+    wire [2:0] m_step = {probe_m2_step, probe_m1_step, probe_m0_step};
+    wire [2:0] m_dir  = {probe_m2_dir, probe_m1_dir, probe_m0_dir};
+    wire [2:0] v_nz   = {|probe_m2_v_internal, |probe_m1_v_internal, |probe_m0_v_internal};
+    wire       run    = ~pd;
+    // driver interface mode (C89, C91): ifconf[5] = en_sd
+    wire       spi_mode = (CHIP == 0) | ((CHIP == 1) & ~ifconf[5]);
+    wire       spi_nx   = (CHIP == 0) | ((CHIP == 1) & ~ifconf_nx[5]);
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire       sd_mode  = (CHIP != 0) & ifconf[5];    // unused on the TMC428
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire       sd_nx    = (CHIP != 0) & ifconf_nx[5];
+
+    // ramp ticks (C40): phase 30 of the frames whose low ramp_div bits are all 1, i.e. whose
+    // number of trailing ones (shared by the motors) is at least ramp_div. The count is
+    // registered: the frame number of the phase-30 edge is the one of the edge before.
+    wire [14:0] frame = prescaler[19:5];
+    wire        ph30  = run & (prescaler[4:0] == 5'd30);
+    reg  [3:0]  frame_ones, frame_ones_q;
+    integer     fi;
+    always @(*) begin
+        frame_ones = 4'd15;
+        for (fi = 14; fi >= 0; fi = fi - 1)
+            if (!frame[fi])
+                frame_ones = fi[3:0];
+    end
+    always @(posedge clk) begin
+        if (rst)
+            frame_ones_q <= 4'd0;
+        else
+            frame_ones_q <= frame_ones;
+    end
+    wire [2:0]  ramp_tick = {ph30 & (frame_ones_q >= drv_m2[23:20]),
+                             ph30 & (frame_ones_q >= drv_m1[23:20]),
+                             ph30 & (frame_ones_q >= drv_m0[23:20])};
+
+    // current scaling (C75-C77); the TMC4210 has none
+    wire [2:0] is0, is1, is2;
+    tmc429_current u_cur0 (
+        .clk(clk), .rst(rst), .tick(ramp_tick[0] & (CHIP != 2)), .v_nz(v_nz[0]),
+        .a_actual(probe_m0_a_actual), .a_threshold(drv_m0[10:0]),
+        .is_agtat(drv_m0[19:17]), .is_aleat(drv_m0[16:14]), .is_v0(drv_m0[13:11]),
+        .i_scale(is0));
+    tmc429_current u_cur1 (
+        .clk(clk), .rst(rst), .tick(ramp_tick[1] & (CHIP != 2)), .v_nz(v_nz[1]),
+        .a_actual(probe_m1_a_actual), .a_threshold(drv_m1[10:0]),
+        .is_agtat(drv_m1[19:17]), .is_aleat(drv_m1[16:14]), .is_v0(drv_m1[13:11]),
+        .i_scale(is1));
+    tmc429_current u_cur2 (
+        .clk(clk), .rst(rst), .tick(ramp_tick[2] & (CHIP != 2)), .v_nz(v_nz[2]),
+        .a_actual(probe_m2_a_actual), .a_threshold(drv_m2[10:0]),
+        .is_agtat(drv_m2[19:17]), .is_aleat(drv_m2[16:14]), .is_v0(drv_m2[13:11]),
+        .i_scale(is2));
+
+    // driver chain (C80-C89)
+    wire       c_cs, c_sck, c_sdo, c_cs_n, c_sck_n, c_sdo_n, c_req;
+    wire [1:0] c_motor, c_motor_n;
+    wire [2:0] c_state;
+    wire [5:0] c_cell;
+    wire [6:0] c_bits;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire       c_unused = c_cs ^ c_sck ^ c_sdo;   // current levels: the pins take the new ones
+    /* verilator lint_on UNUSEDSIGNAL */
+    tmc429_chain u_chain (
+        .clk(clk), .rst(rst), .run(run), .spi_mode(spi_mode),
+        .step(m_step), .dir(m_dir),
+        .ustep({probe_m2_ustep, probe_m1_ustep, probe_m0_ustep}),
+        .i_scale({is2, is1, is0}), .ramp_tick(ramp_tick),
+        .clk2_div_nx(gconf_nx[15:8]), .lsmd(gconf[1:0]),
+        .pol_ph_ab(gconf[4]), .pol_fd_ab(gconf[5]), .pol_dac_ab(gconf[6]),
+        .cont_update(gconf[16]), .cw(cw), .dgw(dgw),
+        .cover_pos(cover_pos), .cover_len(cover_len), .cover_datagram(cover_datagram),
+        .sdi_s(sdi_s_q),
+        .ram_re(ram_re), .ram_addr(ram_addr), .ram_q(ram_q),
+        .take(take), .ret_cw(ret_cw), .ret_dgw(ret_dgw),
+        .cover_busy(cover_busy), .dgw_busy(dgw_busy), .readback(readback),
+        .cs(c_cs), .sck(c_sck), .sdo(c_sdo), .motor(c_motor),
+        .cs_n(c_cs_n), .sck_n(c_sck_n), .sdo_n(c_sdo_n), .motor_n(c_motor_n),
+        .state(c_state), .cidx(c_cell), .bits(c_bits), .req(c_req));
+
+    // Step/Dir (C91-C96): three motors on the TMC429, one on the TMC4210, none on the TMC428
+    wire [2:0] sd_step, sd_dir, sd_step_n, sd_dir_n;
+    genvar gi;
+    generate
+        for (gi = 0; gi < 3; gi = gi + 1) begin : g_sd
+            if (CHIP == 1 || (CHIP == 2 && gi == 0)) begin : g_on
+                tmc429_stepdir u_sd (
+                    .clk(clk), .rst(rst), .run(run), .en(sd_mode),
+                    .step_in(m_step[gi]), .dir_in(m_dir[gi]),
+                    .stpdiv(gconf[11:8]), .step_half(ifconf[2]),
+                    .step(sd_step[gi]), .dir(sd_dir[gi]),
+                    .step_n(sd_step_n[gi]), .dir_n(sd_dir_n[gi]));
+            end else begin : g_off
+                assign sd_step[gi] = 1'b0;    assign sd_dir[gi] = 1'b0;
+                assign sd_step_n[gi] = 1'b0;  assign sd_dir_n[gi] = 1'b0;
+            end
+        end
+    endgenerate
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire sd_unused = ^{sd_step, sd_dir};   // current levels: the pins take the new ones
+    /* verilator lint_on UNUSEDSIGNAL */
+
+    // output pins and the 74HC157 switch sampling (C81, C87, C90-C93)
+    tmc429_drvpins #(.CHIP(CHIP)) u_pins (
+        .clk(clk), .rst(rst), .spi_n(spi_nx), .sd_n(sd_nx),
+        .cs_n(c_cs_n), .sck_n(c_sck_n), .sdo_n(c_sdo_n), .motor_n(c_motor_n),
+        .step_n(sd_step_n), .dir_n(sd_dir_n),
+        .pol_nscs_s(gconf_nx[2]), .pol_sck_s(gconf_nx[3]), .cs_com_ind(gconf_nx[7]),
+        .refmux(gconf_nx[20]), .inv_ref(ifconf_nx[0]), .inv_stp(ifconf_nx[3]),
+        .inv_dir(ifconf_nx[4]), .ref_q(ref_q),
+        .nscs_s(nscs_s), .sck_s(sck_s), .sdo_s(sdo_s), .sdi_s_o(sdi_s_o),
+        .sdi_s_oe(sdi_s_oe), .nscs2(nscs2), .nscs3(nscs3), .mux_sw(mux_sw));
 
     // ---- probes -------------------------------------------------------------------------------
     assign {probe_m2_x_target, probe_m1_x_target, probe_m0_x_target} = p_x_target;
@@ -138,13 +265,13 @@ module tmc429_top #(
     assign {probe_m2_pulse_acc, probe_m1_pulse_acc, probe_m0_pulse_acc} = p_pulse_acc;
     assign {probe_m2_step, probe_m1_step, probe_m0_step} = p_step;
     assign {probe_m2_dir, probe_m1_dir, probe_m0_dir} = p_dir;
-    assign probe_chain_state = 8'd0;
-    assign probe_chain_cell = 8'd0;
-    assign probe_chain_motor = 8'd0;
-    assign probe_chain_bit_count = 8'd0;
-    assign probe_chain_pending = 1'b0;
-    assign probe_chain_cover_waiting = 1'b0;
-    assign probe_chain_readback = 48'd0;
+    assign probe_chain_state = {5'd0, c_state};
+    assign probe_chain_cell = {2'd0, c_cell};
+    assign probe_chain_motor = {6'd0, c_motor};
+    assign probe_chain_bit_count = {1'd0, c_bits};
+    assign probe_chain_pending = c_req;
+    assign probe_chain_cover_waiting = cw | cover_busy;
+    assign probe_chain_readback = readback;
     assign probe_prescaler = {12'd0, prescaler};
     assign probe_power_down = pd;
     assign probe_status = status;

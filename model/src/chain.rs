@@ -6,6 +6,12 @@
 //! global registers and the synchronized SDI_S of the previous edge.
 //!
 //! Frame of one datagram (C82), with LO/HI the SCK_S low/high half periods and P = LO + HI:
+//!
+//! RAM reads (C80): the state before a bit's LOW entry (SETUP, HIGH or GAP) is at least 8 edges
+//! long; at its edge with 4 edges left the bit's configuration cell is read, at the edge with 3
+//! left the LUT cell its code needs, each from that edge's old state (one read per edge, so the
+//! RTL's synchronous RAM read port needs no write forwarding, and the RTL has two more edges to
+//! scale the LUT value and form the bit).
 //! ```text
 //! IDLE ──request──► SETUP (CS active, SCK high, P edges)
 //!   ► LOW (bit on SDO_S, SCK low, LO edges) ► HIGH (SCK high, SDI_S sampled at its first edge,
@@ -68,8 +74,19 @@ pub struct Chain {
     pub req: bool,
     /// Bit m: a step of motor m since its last snapshot (code $13, C84).
     pub stepped: u8,
-    /// Signal vectors of the three motors taken at the start of the datagram (C80).
-    pub snap: [u32; 3],
+    /// Snapshot taken at the start of the datagram (C80): per motor the full-wave index, the
+    /// selected current scale, the direction (bit m) and the step flag (bit m); the polarities.
+    pub snap_w: [u8; 3],
+    pub snap_i_scale: [u8; 3],
+    pub snap_dir: u8,
+    pub snap_step: u8,
+    pub snap_pol: Polarity,
+    /// Configuration cell of the next bit, read 4 edges before its LOW entry (C80).
+    pub cfg: u8,
+    /// LUT cell the next bit's code needs, read 3 edges before its LOW entry (C80).
+    pub lut: u8,
+    /// NxM bit of the cell of the bit being sent (from `cfg`, taken at its LOW entry).
+    pub nxm: bool,
     /// The datagram in progress carries the cover datagram (cw taken at its start).
     pub cover_busy: bool,
     /// A datagram_low/high_word write was pending at the start of the datagram in progress.
@@ -102,7 +119,14 @@ impl Chain {
             bits: 0,
             req: false,
             stepped: 0,
-            snap: [0; 3],
+            snap_w: [0; 3],
+            snap_i_scale: [0; 3],
+            snap_dir: 0,
+            snap_step: 0,
+            snap_pol: Polarity::default(),
+            cfg: 0,
+            lut: 0,
+            nxm: false,
             cover_busy: false,
             dgw_busy: false,
             cov_pos: 0,
@@ -140,8 +164,8 @@ impl Chain {
         // Requests (C83): a step of any motor, cw, the continuous-update timer.
         let steps = motors[0].step as u8 | (motors[1].step as u8) << 1 | (motors[2].step as u8) << 2;
         let cont = g.g(f::CONT_UPDATE) != 0;
-        // Fast path: counting down inside a state.
-        if self.cnt > 1 && (ramp_ticks == 0 || !cont) && self.state != IDLE {
+        // Fast path: counting down inside a state, no RAM read at this edge.
+        if self.counting_only() && (ramp_ticks == 0 || !cont) {
             self.cnt -= 1;
             self.req |= steps != 0 || g.cw;
             self.stepped |= steps;
@@ -166,10 +190,11 @@ impl Chain {
                 changed = start;
             }
             _ if self.cnt > 1 => {
+                self.fetch(ram);
                 self.cnt -= 1;
                 changed = false;
             }
-            SETUP | GAP => self.next_bit(ram, g),
+            SETUP | GAP => self.next_bit(g),
             LOW => {
                 // Rising SCK_S: the driver samples SDO_S; SDI_S shifts into the readback (C87).
                 self.sck = true;
@@ -179,9 +204,8 @@ impl Chain {
                 self.cnt = timing(g.g(f::CLK2_DIV)).1;
             }
             HIGH => {
-                let cell = ram[self.cell as usize & 63];
                 let (_, _, p, gap) = timing(g.g(f::CLK2_DIV));
-                if cell & 0x20 != 0 {
+                if self.nxm {
                     // NxM (C86): LSMD 3 acts as 2.
                     let lsmd = (g.g(f::LSMD) as u8).min(2);
                     if self.motor >= lsmd {
@@ -195,7 +219,7 @@ impl Chain {
                     }
                 } else {
                     self.cell = (self.cell + 1) & 63;
-                    self.next_bit(ram, g);
+                    self.next_bit(g);
                 }
             }
             HOLD => {
@@ -214,7 +238,7 @@ impl Chain {
         }
 
         if start {
-            self.start(ram, g, motors, cur);
+            self.start(g, motors, cur);
         } else {
             // In IDLE without a start no request is pending; elsewhere requests collapse.
             self.req = request;
@@ -223,8 +247,15 @@ impl Chain {
         changed
     }
 
+    /// True when the chain only counts down at the coming edge: inside a state with more than
+    /// one edge left and no RAM read due (C80).
+    #[inline]
+    pub fn counting_only(&self) -> bool {
+        self.state != IDLE && (self.cnt > 4 || (self.cnt > 1 && !matches!(self.state, SETUP | HIGH | GAP)))
+    }
+
     /// The edge of a busy chain that only counts (fast path of `Tmc429::tick`; the caller has
-    /// checked `cnt > 1`, SPI mode, no step, no counting ramp tick).
+    /// checked [`Chain::counting_only`], SPI mode, no step, no counting ramp tick).
     #[inline]
     pub fn count_down(&mut self) {
         if self.state != IDLE {
@@ -232,18 +263,42 @@ impl Chain {
         }
     }
 
-    /// Starts a datagram (C80): snapshot of all signals of all motors, cover and dgw taken.
-    fn start(&mut self, ram: &[u8; 128], g: &mut Global, motors: &[Motor; 3], cur: &[CurrentScale; 3]) {
-        let pol = Polarity {
+    /// The RAM reads ahead of a bit (C80), in SETUP, HIGH and GAP: 4 edges before the LOW
+    /// entry the configuration cell of the next bit (the current cell in SETUP and GAP, the
+    /// following one in HIGH), 3 edges before it the LUT cell that cell's code needs for the
+    /// current motor. Each reads the RAM of the edge's old state.
+    #[inline]
+    fn fetch(&mut self, ram: &[u8; 128]) {
+        match (self.state, self.cnt) {
+            (SETUP | GAP, 4) => self.cfg = ram[self.cell as usize & 63],
+            (HIGH, 4) => self.cfg = ram[(self.cell as usize + 1) & 63],
+            (SETUP | HIGH | GAP, 3) => {
+                let m = (self.motor as usize).min(2);
+                self.lut = ram[microstep::lut_cell(self.snap_w[m], self.cfg)];
+            }
+            _ => {}
+        }
+    }
+
+    /// Starts a datagram (C80): snapshot of the index, current scale, direction and step flag of
+    /// every motor and of the polarities; cover and dgw taken.
+    fn start(&mut self, g: &mut Global, motors: &[Motor; 3], cur: &[CurrentScale; 3]) {
+        self.snap_pol = Polarity {
             ph_ab: g.g(f::POL_PH_AB) != 0,
             fd_ab: g.g(f::POL_FD_AB) != 0,
             dac_ab: g.g(f::POL_DAC_AB) != 0,
         };
+        let mut dir = 0;
+        let mut step = 0;
         for m in 0..3 {
             let mo = &motors[m];
-            let step = (self.stepped >> m) & 1 != 0 || mo.step;
-            self.snap[m] = microstep::signals(ram, mo.ustep, cur[m].i_scale(mo), mo.dir, step, pol);
+            self.snap_w[m] = mo.ustep;
+            self.snap_i_scale[m] = cur[m].i_scale(mo);
+            dir |= (mo.dir as u8) << m;
+            step |= (((self.stepped >> m) & 1 != 0 || mo.step) as u8) << m;
         }
+        self.snap_dir = dir;
+        self.snap_step = step;
         self.stepped = 0;
         self.cover_busy = g.cw;
         g.cw = false;
@@ -262,12 +317,22 @@ impl Chain {
         self.cnt = timing(g.g(f::CLK2_DIV)).2;
     }
 
-    /// Falling SCK_S: the bit of the current cell goes out on SDO_S (C84, C85).
+    /// Falling SCK_S: the bit of the current cell goes out on SDO_S (C84, C85), from the cells
+    /// fetched ahead of it.
     #[inline]
-    fn next_bit(&mut self, ram: &[u8; 128], g: &Global) {
-        let code = ram[self.cell as usize & 63] & 0x1F;
+    fn next_bit(&mut self, g: &Global) {
+        let code = self.cfg & 0x1F;
+        self.nxm = self.cfg & 0x20 != 0;
         let m = (self.motor as usize).min(2);
-        let mut b = (self.snap[m] >> code) & 1 != 0;
+        let mut b = microstep::signal_bit(
+            code,
+            self.snap_w[m],
+            self.lut,
+            self.snap_i_scale[m],
+            (self.snap_dir >> m) & 1 != 0,
+            (self.snap_step >> m) & 1 != 0,
+            self.snap_pol,
+        );
         if self.cover_busy && self.bits >= self.cov_pos && self.bits < self.cov_pos + self.cov_len {
             let i = self.cov_len - 1 - (self.bits - self.cov_pos);
             b = (self.cov_data >> i) & 1 != 0;
@@ -286,6 +351,19 @@ impl Chain {
         let cupd = self.cupd;
         *self = Chain::reset();
         self.cupd = cupd;
+    }
+
+    /// The signal vectors (C73) of the snapshot taken at the last datagram start, with the
+    /// LUT of `ram`: what the datagram carries when the LUT does not change while it is sent
+    /// (the chain itself reads the LUT bit by bit, C80).
+    pub fn snapshot_signals(&self, ram: &[u8; 128]) -> [u32; 3] {
+        let mut v = [0; 3];
+        for (m, s) in v.iter_mut().enumerate() {
+            let dir = (self.snap_dir >> m) & 1 != 0;
+            let step = (self.snap_step >> m) & 1 != 0;
+            *s = microstep::signals(ram, self.snap_w[m], self.snap_i_scale[m], dir, step, self.snap_pol);
+        }
+        v
     }
 
     /// cw as read back and in CDGW: waiting or being sent.

@@ -118,6 +118,9 @@ pub struct Tmc429 {
     pub(crate) cur: [current::CurrentScale; 3],
     /// Step/Dir outputs (C91–C96).
     pub(crate) sd: stepdir::StepDir,
+    /// Edges outside power down (C66): the time base of the Step/Dir unit's counters, which
+    /// stop in power down like every unit behind the SPI slave.
+    run_edges: u64,
     /// Fast path: the last full evaluation of the motion core changed nothing, and neither its
     /// inputs (synchronized pins, multiplexed switches) nor any register has changed since, so
     /// it would change nothing again outside the frame's event phases. Any write to the
@@ -160,6 +163,7 @@ impl Tmc429 {
             chain: chain::Chain::reset(),
             cur: [current::CurrentScale::default(); 3],
             sd: stepdir::StepDir::reset(),
+            run_edges: 0,
         };
         t.out.poscmp = t.has_pos_comp();
         t.driver_pins(0);
@@ -290,6 +294,7 @@ impl Tmc429 {
     pub fn tick(&mut self, inp: &Inputs) -> Outputs {
         if self.idle_edge(inp) {
             self.cycle += 1;
+            self.run_edges += 1;
             self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
             self.chain.count_down();
             return self.out;
@@ -364,6 +369,7 @@ impl Tmc429 {
         let match_old = self.pos_match();
         let mut pins_changed = exec.is_some();
         if !self.power_down {
+            self.run_edges += 1;
             pins_changed |= self.drivers(pins);
             let phase = self.prescaler & 31;
             let event_phase = PHASE_SNAPSHOT.contains(&phase) || phase >= PHASE_COMMIT;
@@ -391,6 +397,11 @@ impl Tmc429 {
         }
         if !self.global.pc_m {
             self.global.pc_i = false;
+        }
+        // INT changed by something other than the motors (the position compare flag): the
+        // next edge registers it on nINT (C11), so it must not take the fast path.
+        if self.int() != int_old {
+            self.quiet = false;
         }
         if wake {
             self.power_down = false;
@@ -669,7 +680,7 @@ impl Tmc429 {
                 !c.req && !c.cs && c.stepped == 0 && !(self.global.cw && spi)
             } else {
                 // Counting down inside a state: the edge only decrements (Chain::count_down).
-                spi && c.cnt > 1
+                spi && c.counting_only()
             };
             if !quiet {
                 return false;
@@ -685,7 +696,7 @@ impl Tmc429 {
                 }
             }
         }
-        self.chip == Chip::Tmc428 || self.sd.quiet(self.step_dir_mode(), self.cycle + 1)
+        self.chip == Chip::Tmc428 || self.sd.quiet(self.step_dir_mode(), self.run_edges + 1)
     }
 
     /// Driver interface mode of the current state (C89, C91).
@@ -732,7 +743,7 @@ impl Tmc429 {
         if self.chip != Chip::Tmc428 {
             let n = self.motor_count();
             let sd = self.step_dir_mode();
-            changed |= self.sd.tick(self.cycle, sd, n, &self.motors, self.global.g(f::CLK2_DIV), self.global.ifc(f::STEP_HALF));
+            changed |= self.sd.tick(self.run_edges, sd, n, &self.motors, self.global.g(f::CLK2_DIV), self.global.ifc(f::STEP_HALF));
         }
         changed
     }

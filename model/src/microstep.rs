@@ -3,8 +3,11 @@
 //! signal vector of one motor (TMC428 §11 Table 11-1, §12 Tables 12-3/12-4; TMC429 §11.5;
 //! contract C70–C74).
 //!
-//! Everything here is combinational: the driver chain evaluates it once per motor at the
-//! start of a datagram (contract C80) and keeps the result in its snapshot register.
+//! Everything here is combinational. The driver chain keeps a snapshot of each motor's index,
+//! current scale, direction and step flag from the start of a datagram and evaluates one bit
+//! per SCK_S period: [`lut_cell`] names the LUT cell the bit's code needs (read one edge before
+//! the bit, contract C80) and [`signal_bit`] forms the bit from it. [`signals`] is the whole
+//! vector at once (the definition the per-bit form is tested against).
 
 /// Primary signal codes (TMC428 Table 11-1).
 pub const DAC_A_0: u8 = 0x00;
@@ -60,6 +63,34 @@ pub fn scale(dac: u8, i_scale: u8) -> u8 {
     }
 }
 
+/// RAM cell (64 + LUT index) that a bit of code `code` reads for full-wave index `w`
+/// (contract C71, C80): coil A (sine) for codes with bit 3 clear ($00–$07), coil B (cosine)
+/// for bit 3 set ($08–$0F). Codes from $10 need no LUT value; they name a cell all the same.
+#[inline]
+pub fn lut_cell(w: u8, code: u8) -> usize {
+    let (si, ci) = lut_indices(w);
+    LUT_BASE + if code & 0x08 == 0 { si } else { ci } as usize
+}
+
+/// Bit `code` of the primary signal vector (C72–C74) of a motor with full-wave index `w`,
+/// where `lut` is the LUT cell [`lut_cell`]`(w, code)`: equal to bit `code` of [`signals`].
+#[inline]
+pub fn signal_bit(code: u8, w: u8, lut: u8, i_scale: u8, negative: bool, step: bool, pol: Polarity) -> bool {
+    let (ph_a, ph_b, fd_a, fd_b) = quadrant_bits(w);
+    match code & 0x1F {
+        c @ (0..=5 | 8..=13) => ((scale(lut, i_scale) >> (c & 7)) & 1 != 0) ^ pol.dac_ab,
+        PH_A => ph_a ^ pol.ph_ab,
+        FD_A => fd_a ^ pol.fd_ab,
+        PH_B => ph_b ^ pol.ph_ab,
+        FD_B => fd_b ^ pol.fd_ab,
+        ZERO => false,
+        ONE => true,
+        DIRECTION => negative,
+        STEP => step,
+        _ => true,
+    }
+}
+
 /// Global-register polarity bits that act on the signal vector (TMC428 §9.7).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Polarity {
@@ -107,6 +138,35 @@ mod tests {
         assert_eq!(lut_indices(192), (63, 0));
         assert_eq!(lut_indices(0), (0, 63));
         assert_eq!(lut_indices(1), (1, 63));
+    }
+
+    #[test]
+    fn per_bit_form_equals_the_vector() {
+        // Every index, code, scale and polarity, with a RAM whose LUT is the sine table
+        // and one whose cells are all different.
+        let mut rams = [[0u8; 128]; 2];
+        rams[0][LUT_BASE..].copy_from_slice(&crate::ram::SINE_LUT);
+        for (i, c) in rams[1].iter_mut().enumerate() {
+            *c = (i as u8).wrapping_mul(37) & 63;
+        }
+        for ram in &rams {
+            for w in 0..=255u8 {
+                for k in 0..8u8 {
+                    for p in 0..32u8 {
+                        let pol = Polarity { ph_ab: p & 1 != 0, fd_ab: p & 2 != 0, dac_ab: p & 4 != 0 };
+                        let (neg, step) = (p & 8 != 0, p & 16 != 0);
+                        let v = signals(ram, w, k, neg, step, pol);
+                        for code in 0..32u8 {
+                            let lut = ram[lut_cell(w, code)];
+                            assert_eq!(signal_bit(code, w, lut, k, neg, step, pol), (v >> code) & 1 != 0);
+                        }
+                    }
+                }
+            }
+        }
+        // Table 12-4: index 64 reads sin 63 (coil A), cos 0 (coil B).
+        assert_eq!(lut_cell(64, 0x05), LUT_BASE + 63);
+        assert_eq!(lut_cell(64, 0x0D), LUT_BASE);
     }
 
     #[test]

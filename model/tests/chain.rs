@@ -400,3 +400,89 @@ fn fast_path_exact_with_drivers() {
         }
     }
 }
+
+/// A chip with Table 11-2 and the sine LUT, LSMD 2, clk2_div 7, and a datagram requested by a
+/// cover write with cover_len 0 (the datagram goes out unchanged).
+fn chip_with_request() -> tmc429_model::Tmc429 {
+    let mut c = tmc429_model::Tmc429::new(Chip::Tmc429);
+    for (w, d) in TABLE_11_3.iter().chain(TABLE_12_2.iter()).enumerate() {
+        let a = if w < TABLE_11_3.len() { w } else { 32 + w - TABLE_11_3.len() };
+        c.write_register(ram_a7(a as u8), *d);
+    }
+    c.write_register(GCONF, gconf(2, 7, 0));
+    c.write_register(COVER_POS_LEN, 0);
+    c.write_register(COVER_DATAGRAM, 0);
+    c
+}
+
+/// Ticks until the chain is in `state` with `cnt` edges left (before the next edge).
+fn run_to(c: &mut tmc429_model::Tmc429, state: u8, cnt: u16, bits: u8) {
+    let inp = tmc429_model::Inputs::default();
+    for _ in 0..100_000 {
+        let ch = c.chain();
+        if ch.state == state && ch.cnt == cnt && ch.bits == bits {
+            return;
+        }
+        c.tick(&inp);
+    }
+    panic!("chain never reached state {state} cnt {cnt} bits {bits}");
+}
+
+/// SDO_S of the bit at position `bits` (read when it enters LOW).
+fn bit_at(c: &mut tmc429_model::Tmc429, bits: u8) -> bool {
+    run_to(c, tmc429_model::chain::LOW, 8, bits); // LO = clk2_div + 1 = 8 edges at entry
+    c.outputs().sdo_s
+}
+
+/// C80: the configuration cell of a bit is read at the edge with 4 edges left in the state before
+/// its LOW entry, the LUT cell at the edge with 3 left; a RAM write before such an edge is seen,
+/// one after it is not.
+#[test]
+fn ram_read_edges_of_a_bit() {
+    use tmc429_model::chain::{HIGH, SETUP};
+    // Bit 0, cell 0 = Zero ($10). Rewritten as One ($11) before the configuration read: seen.
+    let mut c = chip_with_request();
+    assert!(!bit_at(&mut c.clone(), 0), "Table 11-2 cell 0 is Zero");
+    run_to(&mut c, SETUP, 4, 0);
+    c.write_register(ram_a7(0), 0x05 << 8 | 0x11);
+    assert!(bit_at(&mut c, 0), "written before the edge with cnt 4: One is sent");
+    // ... and after it: the cell read before the write is sent.
+    let mut c = chip_with_request();
+    run_to(&mut c, SETUP, 3, 0);
+    c.write_register(ram_a7(0), 0x05 << 8 | 0x11);
+    assert!(!bit_at(&mut c, 0), "written after the configuration read: Zero is sent");
+    // Bit 1, cell 1 = DAC_A bit 5 ($05): w = 0 reads LUT[0] = 0. LUT[0] := 63 before the LUT
+    // read (edge with 3 left in HIGH of bit 0): seen; after it: not.
+    let mut c = chip_with_request();
+    run_to(&mut c, HIGH, 3, 1);
+    c.write_register(ram_a7(32), 2 << 8 | 63);
+    assert!(bit_at(&mut c, 1), "LUT written before its read: DAC_A bit 5 = 1");
+    let mut c = chip_with_request();
+    run_to(&mut c, HIGH, 2, 1);
+    c.write_register(ram_a7(32), 2 << 8 | 63);
+    assert!(!bit_at(&mut c, 1), "LUT written after its read: DAC_A bit 5 = 0");
+}
+
+/// C89: en_sd = 1 during a datagram aborts it (chain IDLE, chip select inactive, pins Step/Dir);
+/// the taken cover returns to waiting and goes out when SPI mode returns.
+#[test]
+fn en_sd_aborts_a_datagram() {
+    use tmc429_model::chain::{IDLE, LOW};
+    let mut c = chip_with_request();
+    c.write_register(COVER_POS_LEN, 4);
+    c.write_register(COVER_DATAGRAM, 0xA);
+    run_to(&mut c, LOW, 8, 5);
+    assert_eq!(c.probes().chain.cover_waiting, 1, "cw reads 1 while the cover is sent");
+    c.write_register(IF_CONF, f::EN_SD.put(1));
+    let inp = tmc429_model::Inputs::default();
+    c.tick(&inp);
+    assert_eq!(c.chain().state, IDLE);
+    assert!(c.outputs().sdi_s_oe, "Step/Dir pins: D2 on SDI_S");
+    assert_eq!(c.probes().chain.cover_waiting, 1, "the cover waits again");
+    assert_ne!(c.status() & 0x40, 0, "CDGW still set");
+    c.write_register(IF_CONF, 0);
+    c.tick(&inp);
+    c.tick(&inp);
+    assert_ne!(c.chain().state, IDLE, "the waiting cover starts a datagram in SPI mode");
+    assert!(c.chain().cover_busy);
+}

@@ -62,3 +62,24 @@ proptest! {
         }
     }
 }
+
+/// The position-compare flag raises INT without touching the motors; the nINT pin follows one
+/// edge later (C11, C65) on the fast path as well.
+#[test]
+fn fast_path_registers_a_position_compare_int() {
+    let trace: Arc<Mutex<Vec<(Inputs, Outputs, Probes)>>> = Arc::default();
+    let mut h = host(Chip::Tmc429);
+    let t = trace.clone();
+    h.set_observer(Box::new(move |c: &Tmc429, i: &Inputs, o: &Outputs| t.lock().unwrap().push((*i, *o, c.probes()))));
+    h.write(tmc429_model::regmap::global_a7(5), 5); // pos_comp 5: no match at x_actual 0
+    h.write(tmc429_model::regmap::global_a7(6), 0x100); // M = 1
+    h.write(tmc429_model::regmap::global_a7(5), 0); // match: I set, INT
+    h.wait(200);
+    assert!(!h.outputs().nint_sdo_c, "nINT low after the position compare event");
+    let mut slow = Tmc429::new(Chip::Tmc429);
+    slow.set_fast_path(false);
+    for (n, (i, o, pr)) in trace.lock().unwrap().iter().enumerate() {
+        assert_eq!(slow.tick(i), *o, "outputs differ at cycle {n}");
+        assert_eq!(slow.probes(), *pr, "probes differ at cycle {n}");
+    }
+}

@@ -173,3 +173,43 @@ fn leaving_step_dir() {
     let o = h.outputs();
     assert!(o.nscs_s && o.sck_s && o.nscs2 && o.nscs3 && !o.sdi_s_oe);
 }
+
+/// C66: power down stops the Step/Dir counters with everything else behind the SPI slave; a
+/// pulse in progress keeps STEP active and ends t_STEP running edges after it began.
+#[test]
+fn power_down_freezes_a_pulse() {
+    use tmc429_model::{Inputs, Tmc429};
+    let mut c = Tmc429::new(Chip::Tmc429);
+    c.write_register(GCONF, gconf(0, 2, 0)); // STPDIV 2: T = 48
+    c.write_register(IF_CONF, f::EN_SD.put(1));
+    c.write_register(motor_a7(0, 10), 3);
+    c.write_register(motor_a7(0, 5), 100);
+    let idle = Inputs::default();
+    let mut n = 0;
+    while !c.outputs().sdo_s {
+        c.tick(&idle);
+        n += 1;
+        assert!(n < 100_000, "no step");
+    }
+    let mut running_edges_high = 0;
+    for _ in 0..10 {
+        c.tick(&idle);
+        running_edges_high += 1;
+    }
+    c.write_register(global_a7(8), 0);
+    assert!(c.is_powered_down());
+    for _ in 0..5000 {
+        c.tick(&idle);
+        assert!(c.outputs().sdo_s, "STEP holds in power down");
+    }
+    // nSCS_C low wakes the chip (C66); the waking edge itself is still powered down.
+    let select = Inputs { nscs_c: false, ..idle };
+    while c.is_powered_down() {
+        c.tick(&select);
+    }
+    while c.outputs().sdo_s {
+        c.tick(&select);
+        running_edges_high += 1;
+    }
+    assert_eq!(running_edges_high, 48, "t_STEP = 16·(1 + 2) running edges");
+}

@@ -23,11 +23,13 @@ pub struct Args {
     /// Without this option a mismatch writes cosim-CHIP-seedS.vcd in the current directory.
     #[arg(long, value_name = "FILE")]
     pub vcd: Option<PathBuf>,
-    /// Stimulus profile: `registers` (motors held, no driver-chain traffic), `motion` (moves in
-    /// every mode, switch events, driver-chain and Step/Dir configurations), `motion-core`
-    /// (`motion` without the traffic seen only through the driver chain: datagram words, cover
-    /// datagram, refmux) or `full` (any register and RAM word with any data).
-    #[arg(long, default_value = "registers", value_parser = ["registers", "motion", "motion-core", "full"])]
+    /// Stimulus profile: `motion` (everything moves: moves in every mode, switch events,
+    /// driver-chain and Step/Dir configurations, cover datagrams), `motion-core` (`motion`
+    /// without the traffic seen only through the driver chain), `drivers` (motors held;
+    /// driver-chain datagrams, covers, continuous update, refmux, polarities, Step/Dir),
+    /// `registers` (motors held, no driver-chain traffic) or `full` (any register and RAM word
+    /// with any data).
+    #[arg(long, default_value = "motion", value_parser = ["motion", "motion-core", "drivers", "registers", "full"])]
     pub profile: String,
     /// Print the functional coverage table and the bins never hit.
     #[arg(long)]

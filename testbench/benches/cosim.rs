@@ -13,7 +13,7 @@ const CYCLES: usize = 200_000;
 
 /// The regression's pin stimulus for `n` cycles.
 fn inputs(chip: Chip, n: usize) -> Vec<Inputs> {
-    let mut stim = Stimulus::new(chip, Profile::Registers, 1);
+    let mut stim = Stimulus::new(chip, Profile::Motion, 1);
     let mut drv = Driver::default();
     (0..n)
         .map(|_| {
@@ -43,7 +43,7 @@ fn bench(c: &mut Criterion) {
     });
 
     g.bench_function("lockstep_pair_tmc429", |b| {
-        let mask = Compare::without_chain();
+        let mask = Compare::all();
         b.iter(|| {
             let mut model = Tmc429::new(chip);
             let mut rtl = Rtl::new(Variant::Chip(chip));

@@ -39,14 +39,15 @@ pub struct Config {
 }
 
 impl Config {
-    /// The regression of this RTL for a chip: register profile, chain not compared.
+    /// The regression of the complete RTL for a chip: the motion profile (everything moves),
+    /// every pin and probe compared.
     pub fn new(chip: Chip, seed: u64, cycles: u64) -> Config {
         Config {
             variant: Variant::Chip(chip),
             seed,
             cycles,
-            profile: Profile::Registers,
-            compare: Compare::without_chain(),
+            profile: Profile::Motion,
+            compare: Compare::all(),
             fclk: chip.default_fclk(),
             vcd: None,
             window: (400, 100),
@@ -306,6 +307,9 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         let rp = rtl.probes();
         cov.cycle(&mo, &mp);
         cov.model(&model, &mp);
+        if cfg.profile == Profile::Drivers {
+            cov.drivers(chip, &mo, &mp, &model);
+        }
         let ok = agree(cfg.compare, &mo, &mp, &ro, &rp);
         if let Some(w) = writer.as_mut() {
             let txt = ended.map(|c| c.short(chip));

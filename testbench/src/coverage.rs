@@ -38,6 +38,10 @@ pub struct Coverage {
     last_power_down: bool,
     last_poscmp: Option<bool>,
     last_pins: Option<PinLevels>,
+    last_chain_state: u8,
+    last_mux: u8,
+    /// The datagram under way carries the cover datagram.
+    cover_seen: bool,
     /// Motion-profile observations of the previous cycle (see [`Coverage::model`]).
     motion: Option<MotionSeen>,
 }
@@ -103,6 +107,26 @@ pub fn motion_bins(chip: Chip) -> Vec<String> {
     v
 }
 
+/// Driver-side bins of [`Profile::Drivers`] (SPI chips: TMC428, TMC429).
+pub const CHAIN_BINS: [&str; 16] = [
+    "chain datagram sent",
+    "chain NxM gap",
+    "chain datagram of 3 drivers",
+    "chain cover datagram sent",
+    "chain back-to-back datagrams",
+    "chain continuous-update datagram",
+    "chain endless datagram (127 bits, no NxM)",
+    "chain readback nonzero",
+    "chain csCommonIndividual: nSCS2 selects",
+    "chain csCommonIndividual: nSCS3 selects",
+    "chain polarity_nscs_s: select high",
+    "chain polarity_sck_s: SCK_S low while idle",
+    "chain DAC scaled (i_scale != 0)",
+    "chain polarity_dac_ab in a datagram",
+    "refmux: switch sampled on nSCS_S",
+    "current scale is_v0 selected",
+];
+
 impl Coverage {
     /// The bins of this blocks for a chip under a stimulus profile.
     pub fn new(chip: Chip, profile: Profile) -> Coverage {
@@ -157,7 +181,7 @@ impl Coverage {
         }
         for (k, f) in FLAG_NAMES.iter().enumerate() {
             // STOP needs a moving motor: only in the motion and full profiles
-            if k == 3 && profile == Profile::Registers {
+            if k == 3 && matches!(profile, Profile::Registers | Profile::Drivers) {
                 continue;
             }
             names.push(format!("interrupt flag {f} set"));
@@ -189,6 +213,18 @@ impl Coverage {
         if chip == Chip::Tmc429 {
             names.push("REFR pin change".into());
             names.push("en_refr: REFR switches read".into());
+        }
+        if profile == Profile::Drivers {
+            if chip != Chip::Tmc4210 {
+                names.extend(CHAIN_BINS.iter().map(|s| s.to_string()));
+            }
+            if chip == Chip::Tmc429 {
+                names.push("en_sd aborts a datagram".into());
+                names.push("Step/Dir pins (SDI_S driven)".into());
+            }
+            if chip == Chip::Tmc4210 {
+                names.push("Step/Dir mode: STEP/DIR pins configured".into());
+            }
         }
         let motion = matches!(profile, Profile::Motion | Profile::MotionCore);
         if motion {
@@ -343,6 +379,76 @@ impl Coverage {
                 self.hit(if prev { "POSCMP pin falls" } else { "POSCMP pin rises" });
             }
             self.last_poscmp = Some(o.poscmp);
+        }
+    }
+
+    /// Called every cycle of [`Profile::Drivers`] with the model after the tick.
+    #[inline]
+    pub fn drivers(&mut self, chip: Chip, o: &Outputs, p: &Probes, model: &Tmc429) {
+        let st = p.chain.state;
+        let last = self.last_chain_state;
+        let g = model.global();
+        if chip != Chip::Tmc4210 {
+            let c = model.chain();
+            if st != last {
+                match (last, st) {
+                    (5, 6) => {
+                        self.hit("chain datagram sent");
+                        if c.motor == 2 {
+                            self.hit("chain datagram of 3 drivers");
+                        }
+                    }
+                    (6, 1) => self.hit("chain back-to-back datagrams"),
+                    (_, 4) => self.hit("chain NxM gap"),
+                    (2, 3) if c.bits == 127 => self.hit("chain endless datagram (127 bits, no NxM)"),
+                    (l, 0) if l != 6 && chip == Chip::Tmc429 => self.hit("en_sd aborts a datagram"),
+                    _ => {}
+                }
+                if st == 1 {
+                    if !c.cover_busy && !g.cw {
+                        self.hit("chain continuous-update datagram");
+                    }
+                    if c.snap_i_scale.iter().any(|&k| k != 0) {
+                        self.hit("chain DAC scaled (i_scale != 0)");
+                    }
+                    if c.snap_pol.dac_ab {
+                        self.hit("chain polarity_dac_ab in a datagram");
+                    }
+                }
+                if (last, st) == (5, 6) && self.cover_seen {
+                    self.hit("chain cover datagram sent");
+                }
+                self.last_chain_state = st;
+            }
+            self.cover_seen = c.cover_busy;
+            if p.chain.readback != 0 {
+                self.hit("chain readback nonzero");
+            }
+            if !o.nscs2 {
+                self.hit("chain csCommonIndividual: nSCS2 selects");
+            }
+            if !o.nscs3 {
+                self.hit("chain csCommonIndividual: nSCS3 selects");
+            }
+            if c.cs && o.nscs_s && g.gconf & 0x84 == 0x04 {
+                self.hit("chain polarity_nscs_s: select high");
+            }
+            if st == 0 && !o.sck_s && !o.sdi_s_oe {
+                self.hit("chain polarity_sck_s: SCK_S low while idle");
+            }
+            if g.mux_switches != self.last_mux {
+                self.hit("refmux: switch sampled on nSCS_S");
+                self.last_mux = g.mux_switches;
+            }
+            if (0..3).any(|m| model.current_scale(m).sel == tmc429_model::current::SEL_V0) {
+                self.hit("current scale is_v0 selected");
+            }
+        }
+        if o.sdi_s_oe {
+            self.hit("Step/Dir pins (SDI_S driven)");
+        }
+        if chip == Chip::Tmc4210 && g.ifconf & 0x20 != 0 {
+            self.hit("Step/Dir mode: STEP/DIR pins configured");
         }
     }
 

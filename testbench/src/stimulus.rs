@@ -99,6 +99,14 @@ pub enum Profile {
     /// refmux stay 0. Everything else is free: every register and RAM word with random and
     /// boundary data, short, long and back-to-back frames, pin changes, power down.
     Registers,
+    /// The register profile's motors (HOLD_MODE, v_actual 0: no motion core needed) with the
+    /// whole driver side running: cover datagrams, continuous_update and refmux are free, the
+    /// global parameter register is drawn with small clk2_div values most of the time, and
+    /// directed sequences ([`driver_sequence`]) write driver-chain configurations (TMC428
+    /// Table 11-2 and random valid NxM/LSMD chains), microstep indices, current scales,
+    /// polarities, csCommonIndividual, cover datagrams and the Step/Dir bits of
+    /// if_configuration (en_sd, step_half, inv_stp, inv_dir).
+    Drivers,
     /// Everything moves (testbench/src/motion_stim.rs): moves in all four ramp modes with valid
     /// and boundary parameters, target and mode changes during motion, reference searches with
     /// switch events and latching, current scaling, driver-chain configurations, cover
@@ -117,6 +125,7 @@ impl Profile {
         match self {
             Profile::Full => "full",
             Profile::Registers => "registers",
+            Profile::Drivers => "drivers",
             Profile::Motion => "motion",
             Profile::MotionCore => "motion-core",
         }
@@ -125,6 +134,7 @@ impl Profile {
         match s {
             "full" => Some(Profile::Full),
             "registers" => Some(Profile::Registers),
+            "drivers" => Some(Profile::Drivers),
             "motion" => Some(Profile::Motion),
             "motion-core" => Some(Profile::MotionCore),
             _ => None,
@@ -137,7 +147,7 @@ pub fn motors(chip: Chip) -> usize {
     if chip == Chip::Tmc4210 { 1 } else { 3 }
 }
 
-/// Adjusts a frame to a profile (see [`Profile::Registers`], [`Profile::MotionCore`]).
+/// Adjusts a frame to a profile (see [`Profile::Registers`], [`Profile::Drivers`], [`Profile::MotionCore`]).
 pub fn sanitize(profile: Profile, f: &mut Frame) {
     if profile == Profile::MotionCore {
         let a7 = f.a7();
@@ -148,7 +158,11 @@ pub fn sanitize(profile: Profile, f: &mut Frame) {
         }
         return;
     }
-    if profile != Profile::Registers || f.is_read() {
+    if !matches!(profile, Profile::Registers | Profile::Drivers) || f.is_read() {
+        return;
+    }
+    if profile == Profile::Drivers {
+        sanitize_drivers(f);
         return;
     }
     let a7 = f.a7();
@@ -171,11 +185,152 @@ pub fn sanitize(profile: Profile, f: &mut Frame) {
     f.datagram = (f.datagram & 0xFF00_0000) | (new_data & 0xFF_FFFF);
 }
 
+/// [`Profile::Drivers`]: the motors stay in HOLD_MODE with v_actual 0; a random write of the
+/// global parameter register keeps clk2_div below 16 in 7 of 8 frames (short datagrams).
+pub fn sanitize_drivers(f: &mut Frame) {
+    let a7 = f.a7();
+    let data = f.data();
+    let new_data = if a7 < 0x30 {
+        match a7 & 0xF {
+            10 => data | 3,
+            5 => data & !0xFFF,
+            _ => data,
+        }
+    } else if a7 == 0x3F && data & 0xE000 != 0 {
+        data & !0xF000
+    } else {
+        data
+    };
+    f.datagram = (f.datagram & 0xFF00_0000) | (new_data & 0xFF_FFFF);
+}
+
+/// One driver-chain configuration cell: code (bits 4..0) and NxM (bit 5).
+fn cell(code: u8, nxm: bool) -> u8 {
+    (code & 0x1F) | (nxm as u8) << 5
+}
+
+/// RAM word writes for configuration cells 0..: a7 = $40 + word, odd cell in bits 13..8.
+fn ram_config_writes(cells: &[u8]) -> Vec<Txn> {
+    cells
+        .chunks(2)
+        .enumerate()
+        .map(|(w, p)| {
+            let odd = p.get(1).copied().unwrap_or(0) as u32;
+            Txn::Frame(Frame::write(0x40 | w as u8, odd << 8 | p[0] as u32))
+        })
+        .collect()
+}
+
+/// A directed driver-side sequence for [`Profile::Drivers`], drawn from `pick` (a value per
+/// call: `pick(n)` in 0..n).
+pub fn driver_sequence(chip: Chip, pick: &mut dyn FnMut(u32) -> u32) -> Vec<Txn> {
+    let w = |a7: u8, d: u32| Txn::Frame(Frame::write(a7, d));
+    let mut seq = Vec::new();
+    let spi_chip = chip != Chip::Tmc4210;
+    match pick(9) {
+        0 | 1 if spi_chip => {
+            // A configuration: TMC428 Table 11-2 (three 12-bit drivers) or a random valid chain
+            // of lsmd + 1 drivers, each 1..12 cells with NxM on its last cell.
+            let lsmd = pick(4);
+            let cells: Vec<u8> = if pick(2) == 0 {
+                tmc429_model::ram::TABLE_11_2.to_vec()
+            } else {
+                let mut v = Vec::new();
+                for _ in 0..=lsmd.min(2) {
+                    let n = 1 + pick(12);
+                    for k in 0..n {
+                        v.push(cell(pick(32) as u8, k == n - 1));
+                    }
+                }
+                v
+            };
+            seq.extend(ram_config_writes(&cells));
+            let clk2 = if pick(4) == 0 { pick(256) } else { pick(16) };
+            seq.push(w(0x3F, pick(8) << 4 | clk2 << 8 | pick(2) << 16 | pick(2) << 20 | lsmd));
+        }
+        2 if spi_chip => {
+            // Polarities, csCommonIndividual, LSMD, refmux, continuous_update.
+            let gp = pick(256);
+            let clk2 = if pick(3) == 0 { pick(256) } else { pick(16) };
+            seq.push(w(0x3F, gp | clk2 << 8 | pick(2) << 16 | pick(2) << 20 | pick(2) << 21));
+        }
+        3 if spi_chip => {
+            // A cover datagram: position, length, data; sometimes a second one at once.
+            let pos = if pick(4) == 0 { 63 } else { pick(64) };
+            seq.push(w(0x32, pos << 8 | pick(32)));
+            seq.push(w(0x33, pick(1 << 24)));
+            if pick(3) == 0 {
+                seq.push(w(0x33, pick(1 << 24)));
+            }
+            seq.push(Txn::Frame(Frame::read(0x32)));
+        }
+        4 => {
+            // Microstep indices (TMC429 IDX 15), current scales and short ramp_div.
+            for m in 0..motors(chip) as u8 {
+                if pick(2) == 0 {
+                    seq.push(w(m << 4 | 15, pick(256)));
+                }
+                if pick(3) == 0 {
+                    seq.push(w(m << 4 | 8, pick(1 << 24)));
+                }
+                if pick(3) == 0 {
+                    seq.push(w(m << 4 | 12, pick(3) << 8 | pick(8)));
+                }
+            }
+            if spi_chip && pick(2) == 0 {
+                seq.push(w(0x33, pick(1 << 24))); // request a datagram with them
+            }
+        }
+        5 if chip != Chip::Tmc428 => {
+            // Step/Dir bits of if_configuration: en_sd, step_half, inv_stp, inv_dir (inv_ref,
+            // sdo_int, pos_comp_sel, en_refr random); en_sd = 1 in one of three. On the TMC429
+            // sometimes while a datagram is under way (C89: it is aborted).
+            if chip == Chip::Tmc429 && pick(2) == 0 {
+                seq.push(w(0x34, pick(512) & !0x20));
+                seq.push(w(0x3F, pick(8) << 8 | pick(4)));
+                seq.push(w(0x33, pick(1 << 24)));
+                seq.push(Txn::Idle(pick(400)));
+            }
+            let en_sd = if pick(3) == 0 { 0x20 } else { 0 };
+            seq.push(w(0x34, (pick(512) & !0x20) | en_sd));
+            seq.push(w(0x3F, pick(2) << 16 | pick(16) << 8 | pick(2) << 20));
+        }
+        8 if spi_chip && pick(4) == 0 => {
+            // No NxM bit anywhere: the datagram never ends (C84) and the bit counter saturates;
+            // then an NxM bit ends it.
+            let cells: Vec<u8> = (0..64).map(|_| cell(pick(32) as u8, false)).collect();
+            seq.extend(ram_config_writes(&cells));
+            seq.push(w(0x3F, pick(3) << 8 | pick(256) & 0xFC));
+            seq.push(w(0x33, pick(1 << 24)));
+            seq.push(Txn::Idle(3000 + pick(3000)));
+            let word = pick(32) as u8;
+            seq.push(w(0x40 | word, 0x20 << 8 | 0x20));
+        }
+        6 if spi_chip => {
+            // The readback and CDGW: a datagram-word write, then the words read.
+            seq.push(w(0x30 | pick(2) as u8, pick(1 << 24)));
+            seq.push(w(0x33, pick(1 << 24)));
+            seq.push(Txn::Idle(200 + pick(4000)));
+            seq.push(Txn::Frame(Frame::read(0x30)));
+            seq.push(Txn::Frame(Frame::read(0x31)));
+        }
+        _ => {
+            // Let the chain run: wait, read the switches.
+            seq.push(Txn::Idle(100 + pick(5000)));
+            seq.push(Txn::Frame(Frame::read(0x3E)));
+        }
+    }
+    if seq.is_empty() {
+        seq.push(Txn::Idle(1 + pick(500)));
+    }
+    seq
+}
+
 /// Transactions that bring a fresh chip into the state a profile assumes.
 pub fn prologue(chip: Chip, profile: Profile) -> Vec<Txn> {
     match profile {
         Profile::Full | Profile::Motion | Profile::MotionCore => Vec::new(),
-        Profile::Registers => (0..motors(chip))
+        Profile::Registers | Profile::Drivers => (0..motors(chip))
             .map(|m| Txn::Frame(Frame::write((m as u8) << 4 | 10, 3)))
             .collect(),
     }
@@ -264,6 +419,7 @@ enum Kind {
     Idle,
     PowerDown,
     Meet,
+    Drivers,
 }
 
 /// A reproducible stream of transactions for one chip, from a seed.
@@ -318,14 +474,16 @@ impl Stimulus {
     }
 
     /// A transaction of the register profiles: a frame, a pin change, idle time, power down or
-    /// a directed position meeting.
+    /// a directed position meeting; with [`Profile::Drivers`] also a [`driver_sequence`].
     pub(crate) fn register_txn(&mut self) -> Txn {
+        let drivers = if self.profile == Profile::Drivers { 12 } else { 0 };
         let kind = self.draw(prop_oneof![
             80 => Just(Kind::Frame),
             14 => Just(Kind::Pins),
             4 => Just(Kind::Idle),
             2 => Just(Kind::PowerDown),
             2 => Just(Kind::Meet),
+            drivers => Just(Kind::Drivers),
         ]);
         match kind {
             Kind::Frame => {
@@ -352,6 +510,14 @@ impl Stimulus {
                 let sleep = self.draw(prop_oneof![1 => 1u32..20, 2 => 20u32..2000]);
                 self.pending.push_back(Txn::Idle(sleep));
                 Txn::Frame(Frame::write(0x38, data))
+            }
+            Kind::Drivers => {
+                let chip = self.chip;
+                let mut pick = |n: u32| self.draw(0..n.max(1));
+                let mut seq = driver_sequence(chip, &mut pick);
+                let first = seq.remove(0);
+                self.pending.extend(seq);
+                first
             }
             Kind::Meet => {
                 // A directed sequence: a motor's x_actual moves onto x_target and onto

@@ -1,10 +1,11 @@
-//! Lock-step random regression: model and RTL agree on every pin and (masked) probe, and
-//! every coverage bin of the blocks built so far is hit (10 M CLK cycles per variant, seed 1,
-//! as `tmc429 cosim --chip X --seed 1 --cycles 10000000`).
+//! Lock-step random regressions: model and RTL agree on every pin and probe, and every coverage
+//! bin is hit (10 M CLK cycles per variant and profile, seed 1, as `tmc429 cosim --chip X
+//! --profile drivers|motion --seed 1 --cycles 10000000`).
 //! `TMC429_COSIM_CYCLES` overrides the length (the coverage check needs the full run).
 #![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use tmc429_model::Chip;
+use tmc429_testbench::coverage::motion_bins;
 use tmc429_testbench::stimulus::Profile;
 use tmc429_testbench::{run, Config};
 
@@ -16,7 +17,8 @@ fn cycles() -> u64 {
 
 fn regression(chip: Chip) {
     let n = cycles();
-    let cfg = Config::new(chip, 1, n);
+    let mut cfg = Config::new(chip, 1, n);
+    cfg.profile = Profile::Drivers;
     let out = run(&cfg).expect("co-simulation runs");
     if let Some(m) = &out.mismatch {
         panic!("{}", out.report(m));
@@ -51,7 +53,7 @@ fn lockstep_tmc4210() {
 fn lockstep_more_seeds() {
     for chip in Chip::ALL {
         for seed in [2u64, 3, 1234] {
-            let out = run(&Config::new(chip, seed, 300_000)).expect("co-simulation runs");
+            let out = run(&Config::new(chip, seed, 1_000_000)).expect("co-simulation runs");
             if let Some(m) = &out.mismatch {
                 panic!("{}", out.report(m));
             }
@@ -59,15 +61,18 @@ fn lockstep_more_seeds() {
     }
 }
 
-/// The motion core in lock-step: the `motion-core` profile (moves in every mode, retargeting,
-/// mode changes, reference searches with switch stops and latching, power down, register
-/// traffic) with only the driver-chain pins and probes masked, 10 M cycles per variant
-/// (`TMC429_COSIM_CYCLES` overrides). The run must move the motors: steps both ways, moves that
-/// end on their target, switch stops and latches.
+/// The complete chip in lock-step with everything moving: the `motion` profile (moves in every
+/// mode with valid and boundary parameters, retargeting, mode changes, reference searches with
+/// switch stops and latching, current scaling, driver-chain configurations, cover datagrams,
+/// continuous update, refmux, Step/Dir, power down, register traffic), every pin and probe
+/// compared, 10 M cycles per variant (`TMC429_COSIM_CYCLES` overrides). Every motion bin
+/// (`coverage::motion_bins`: each mode, stops hard and soft, latch on both edges, each usrs, each
+/// current scale, cover, continuous update, Step/Dir with step_half …) and the STOP interrupt
+/// must be hit.
 fn motion_regression(chip: Chip) {
     let n = cycles();
-    let mut cfg = Config::new(chip, 1, n);
-    cfg.profile = Profile::MotionCore;
+    let cfg = Config::new(chip, 1, n);
+    assert_eq!(cfg.profile, Profile::Motion);
     let out = run(&cfg).expect("co-simulation runs");
     if let Some(m) = &out.mismatch {
         panic!("{}", out.report(m));
@@ -75,21 +80,10 @@ fn motion_regression(chip: Chip) {
     assert_eq!(out.cycles, n);
     if n >= FULL {
         let bins = out.coverage.bins();
-        for b in [
-            "step positive",
-            "step negative",
-            "RAMP_MODE: move ends at x_target",
-            "VELOCITY_MODE: v_actual reaches v_target",
-            "mode change during motion",
-            "x_target change during motion",
-            "switch stop, hard",
-            "switch stop, soft",
-            "latch on a rising switch edge",
-            "latch on a falling switch edge",
-            "interrupt flag STOP set",
-        ] {
-            assert!(bins.get(b).copied().unwrap_or(0) > 0, "{chip}: bin {b} never hit\n{}", out.coverage.table());
-        }
+        let mut want = motion_bins(chip);
+        want.push("interrupt flag STOP set".into());
+        let missed: Vec<&String> = want.iter().filter(|b| bins.get(b.as_str()).copied().unwrap_or(0) == 0).collect();
+        assert!(missed.is_empty(), "{chip}: motion bins never hit: {missed:?}\n{}", out.coverage.table());
     }
 }
 

@@ -447,7 +447,7 @@ impl Recorder for ChainCsv {
         }
         let started = ch.state == chain::SETUP && (self.prev_state == chain::IDLE || self.prev_state == chain::CSOFF);
         if started {
-            self.cur = Some((chip.cycle(), ch.snap, ch.cover_busy, 0));
+            self.cur = Some((chip.cycle(), ch.snapshot_signals(chip.ram()), ch.cover_busy, 0));
         }
         if let Some(cur) = self.cur.as_mut() {
             cur.3 = cur.3.max(ch.motor);

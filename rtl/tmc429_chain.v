@@ -1,0 +1,288 @@
+// tmc429_chain: the driver-chain SPI master (docs/model-contract.md C80-C89; TMC428 §6.3,
+// §9.1-§9.3, §9.7, §10, §11; TMC429 §8.2.1-§8.2.5, §11).
+//
+// One state machine with one down-counter `cnt` (edges left in the state). Frame of one
+// datagram (C82), LO/HI = SCK_S low/high half periods, P = LO + HI, G = NxM gap (C81):
+//
+//   IDLE --request--> SETUP (CS active, SCK high, P edges)
+//     -> LOW (bit on SDO_S, SCK low, LO edges) -> HIGH (SCK high, SDI_S shifted into the
+//        readback at its first edge, HI edges) -> next bit, or GAP (NxM, motor < LSMD,
+//        G edges, motor + 1) -> next bit, or HOLD (NxM, motor = LSMD, CS active, P edges)
+//     -> CSOFF (CS inactive, P edges) -> next datagram in the same edge, or IDLE
+//
+// Start edge (C80, C85, C88): snapshot of each motor's full-wave index, current scale,
+// direction and step flag (step flags since the last start included) and of the three
+// signal polarities; cw and the datagram-word flag are taken (`take`: the register file
+// clears them) and the cover position, length (max 24) and data are latched.
+//
+// RAM reads (C80): the state before a bit's LOW entry (SETUP, HIGH or GAP, >= 8 edges) reads
+// the bit's configuration cell at its edge with cnt = 4 (the current cell in SETUP and GAP,
+// the following one in HIGH) and, at cnt = 3, the LUT cell that cell's code needs for the
+// current motor (tmc429_microstep). The RAM read port is synchronous with a read enable:
+// `ram_q` holds the cell read at the last enabled edge. Pipeline to the SDO_S pin register:
+// cnt = 3: `cfg` := configuration cell; cnt = 2: `dac` := scaled LUT value, cover decision
+// registered; cnt = 1 (LOW entry): the bit from `cfg`, `dac` and the snapshot. The snapshot
+// is kept as a shift register whose slot 0 is the current motor (shifted at the NxM gap).
+// SCK_S timing values are registers, loaded from the new clk2_div of every edge.
+//
+// Requests (C83): a step flag, cw, a continuous-update counter wrapping (per motor, 10 bits,
+// counts the motor's ramp ticks while cont_update = 1, reset 0 / 341 / 682). Leaving SPI
+// mode (C89, `spi_mode` = 0) aborts a datagram: back to IDLE, taken flags are given back
+// (`ret_cw`, `ret_dgw`). Powered down (`run` = 0) everything holds (C66).
+//
+// Pin levels before polarity: `cs`, `sck`, `sdo` and `motor` (for csCommonIndividual) of
+// the current state, `*_n` of the new state (for the registered output pins).
+// Same function as tmc429_model::chain::Chain.
+`default_nettype none
+
+module tmc429_chain (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire        run,            // not powered down (C66)
+    input  wire        spi_mode,       // SPI mode, old state (TMC428; TMC429 en_sd = 0)
+    // motors, old state (C70)
+    input  wire [2:0]  step,           // step flags of motors 2..0
+    input  wire [2:0]  dir,            // direction of the last step, 1 = negative
+    input  wire [23:0] ustep,          // full-wave indices {m2, m1, m0}
+    input  wire [8:0]  i_scale,        // selected current scales {m2, m1, m0}
+    input  wire [2:0]  ramp_tick,      // ramp ticks of this edge (C40)
+    // global registers, old state
+    input  wire [7:0]  clk2_div_nx,    // clk2_div of the new state (timing registers)
+    input  wire [1:0]  lsmd,
+    input  wire        pol_ph_ab,
+    input  wire        pol_fd_ab,
+    input  wire        pol_dac_ab,
+    input  wire        cont_update,
+    input  wire        cw,             // cover datagram waiting
+    input  wire        dgw,            // datagram_low/high_word write waiting (C88)
+    input  wire [5:0]  cover_pos,
+    input  wire [4:0]  cover_len,
+    input  wire [23:0] cover_datagram,
+    input  wire        sdi_s,          // synchronized SDI_S (C4)
+    // RAM read port (cells 0..127, synchronous, read enable)
+    output wire        ram_re,
+    output wire [6:0]  ram_addr,
+    input  wire [5:0]  ram_q,
+    // handshake with the register file
+    output reg         take,           // start edge: cw and dgw are taken
+    output reg         ret_cw,         // abort: the cover returns to waiting
+    output reg         ret_dgw,        // abort: the datagram-word flag returns
+    output reg         cover_busy,     // the datagram under way carries the cover
+    output reg         dgw_busy,       // the datagram under way took the datagram-word flag
+    output reg  [47:0] readback,       // SDI_S readback register (C87)
+    // pins before polarity
+    output reg         cs,
+    output reg         sck,
+    output reg         sdo,
+    output reg  [1:0]  motor,
+    output reg         cs_n,
+    output reg         sck_n,
+    output reg         sdo_n,
+    output reg  [1:0]  motor_n,
+    // probes
+    output reg  [2:0]  state,
+    output reg  [5:0]  cidx,           // configuration cell of the current bit
+    output reg  [6:0]  bits,
+    output reg         req
+);
+    localparam IDLE = 3'd0, SETUP = 3'd1, LOW = 3'd2, HIGH = 3'd3, GAP = 3'd4, HOLD = 3'd5,
+               CSOFF = 3'd6;
+
+    // ---- SCK_S timing (C81), registered: the values of the current clk2_div --------------
+    wire [8:0] nx_lo  = {1'b0, clk2_div_nx} + 9'd1;
+    wire [8:0] nx_hi  = (clk2_div_nx >= 8'd7) ? nx_lo : (9'd15 - {1'b0, clk2_div_nx});
+    wire [9:0] nx_p   = {1'b0, nx_lo} + {1'b0, nx_hi};
+    wire [9:0] nx_gap = (clk2_div_nx <= 8'd7) ? nx_p : ({1'b0, nx_lo} + {nx_lo, 1'b0});
+    reg  [8:0] t_lo, t_hi;
+    reg  [9:0] t_p, t_gap;
+    always @(posedge clk) begin
+        if (rst) begin
+            t_lo <= 9'd16;  t_hi <= 9'd16;  t_p <= 10'd32;  t_gap <= 10'd48;   // clk2_div 15
+        end else begin
+            t_lo <= nx_lo;  t_hi <= nx_hi;  t_p <= nx_p;  t_gap <= nx_gap;
+        end
+    end
+
+    // ---- state ----------------------------------------------------------------------------
+    reg [9:0]  cnt, cnt_n;
+    reg [2:0]  state_n;
+    reg [5:0]  cidx_n;
+    reg [6:0]  bits_n;
+    reg        req_n;
+    reg [2:0]  stepped, stepped_n;
+    reg [23:0] snap_w;                  // slots {2, 1, 0}; slot 0 = current motor
+    reg [8:0]  snap_is;
+    reg [2:0]  snap_dir, snap_step, snap_pol;
+    reg [5:0]  cfg, dac;
+    reg        cov_sel, cov_bit;
+    reg        nxm, nxm_n;
+    reg [5:0]  cov_pos;
+    reg [4:0]  cov_len;
+    reg [23:0] cov_data;
+    reg [9:0]  cupd0, cupd1, cupd2;
+    reg        cover_busy_n, dgw_busy_n, start, shift;
+    reg [47:0] readback_n;
+
+    // ---- RAM reads ahead of a bit (C80) ------------------------------------------------------
+    wire       pre_bit  = (state == SETUP) | (state == HIGH) | (state == GAP);
+    wire       rd_cfg   = pre_bit & (cnt == 10'd4);
+    wire       rd_lut   = pre_bit & (cnt == 10'd3);
+    wire       pre_dac  = pre_bit & (cnt == 10'd2);
+    wire [5:0] cfg_cell = (state == HIGH) ? cidx + 6'd1 : cidx;
+
+    wire [5:0] lut_idx, dac_nx;
+    wire       sig_bit;
+    tmc429_microstep u_ustep (
+        .w(snap_w[7:0]), .coil_b(ram_q[3]), .lut_idx(lut_idx),
+        .lut(ram_q), .i_scale(snap_is[2:0]), .dac(dac_nx),
+        .code(cfg[4:0]), .dac_q(dac), .negative(snap_dir[0]), .step(snap_step[0]),
+        .pol_ph_ab(snap_pol[0]), .pol_fd_ab(snap_pol[1]), .pol_dac_ab(snap_pol[2]),
+        .bit_out(sig_bit));
+
+    assign ram_re   = run & spi_mode & (rd_cfg | rd_lut);
+    assign ram_addr = rd_cfg ? {1'b0, cfg_cell} : {1'b1, lut_idx};
+
+    // ---- cover (C85): positions cover_pos <= k < cover_pos + len carry data[len-1-(k-pos)];
+    // decided at cnt = 2 (bits does not change before the LOW entry)
+    wire [6:0] cov_d   = bits - {1'b0, cov_pos};
+    wire       cov_in  = cover_busy & (bits >= {1'b0, cov_pos}) & (cov_d < {2'b0, cov_len});
+    wire [4:0] cov_i   = cov_len - 5'd1 - cov_d[4:0];
+    wire       bit_now = cov_sel ? cov_bit : sig_bit;
+
+    // ---- requests (C83) ---------------------------------------------------------------------
+    wire [2:0] cu_tick = ramp_tick & {3{cont_update}};
+    reg  [2:0] cupd_top;                // counter at 1023 (registered compare)
+    wire [2:0] wrap    = cu_tick & cupd_top;
+    wire       request = req | (|step) | cw | (|wrap);
+    wire [1:0] lsmd_e  = (lsmd == 2'd3) ? 2'd2 : lsmd;       // C86: LSMD 3 acts as 2
+
+    // ---- next state -------------------------------------------------------------------------
+    always @(*) begin
+        state_n = state;  cnt_n = cnt;  cidx_n = cidx;  motor_n = motor;  bits_n = bits;
+        req_n = req;  stepped_n = stepped;  nxm_n = nxm;
+        cover_busy_n = cover_busy;  dgw_busy_n = dgw_busy;  readback_n = readback;
+        cs_n = cs;  sck_n = sck;  sdo_n = sdo;
+        start = 1'b0;  shift = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
+        if (run) begin
+            if (!spi_mode) begin
+                if (state != IDLE || cs || req || stepped != 3'd0) begin
+                    // C89: leaving SPI mode aborts; taken flags return to waiting
+                    ret_cw = cover_busy;   ret_dgw = dgw_busy;
+                    state_n = IDLE;  cnt_n = 10'd0;  cidx_n = 6'd0;  motor_n = 2'd0;  bits_n = 7'd0;
+                    req_n = 1'b0;  stepped_n = 3'd0;  nxm_n = 1'b0;
+                    cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
+                    cs_n = 1'b0;  sck_n = 1'b1;  sdo_n = 1'b0;
+                end
+            end else begin
+                if (state == IDLE) begin
+                    start = request;
+                end else if (cnt > 10'd1) begin
+                    cnt_n = cnt - 10'd1;
+                end else begin
+                    case (state)
+                    SETUP, GAP: begin
+                        // falling SCK_S: the bit goes out (C84, C85)
+                        sdo_n = bit_now;  nxm_n = cfg[5];  sck_n = 1'b0;
+                        state_n = LOW;  cnt_n = {1'b0, t_lo};
+                    end
+                    LOW: begin
+                        // rising SCK_S: SDI_S into the readback (C87)
+                        sck_n = 1'b1;
+                        readback_n = {readback[46:0], sdi_s};
+                        if (bits != 7'd127)
+                            bits_n = bits + 7'd1;
+                        state_n = HIGH;  cnt_n = {1'b0, t_hi};
+                    end
+                    HIGH: begin
+                        if (nxm) begin
+                            if (motor >= lsmd_e) begin
+                                state_n = HOLD;  cnt_n = t_p;
+                            end else begin
+                                motor_n = motor + 2'd1;  cidx_n = cidx + 6'd1;
+                                state_n = GAP;  cnt_n = t_gap;  shift = 1'b1;
+                            end
+                        end else begin
+                            cidx_n = cidx + 6'd1;
+                            sdo_n = bit_now;  nxm_n = cfg[5];  sck_n = 1'b0;
+                            state_n = LOW;  cnt_n = {1'b0, t_lo};
+                        end
+                    end
+                    HOLD: begin
+                        // end of the datagram: CS inactive, CDGW handshake done (C87, C88)
+                        cs_n = 1'b0;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
+                        state_n = CSOFF;  cnt_n = t_p;
+                    end
+                    default: begin
+                        // CSOFF over: the next datagram starts at once if one is requested
+                        state_n = IDLE;
+                        start = request;
+                    end
+                    endcase
+                end
+                if (start) begin
+                    take = 1'b1;
+                    cover_busy_n = cw;  dgw_busy_n = dgw;
+                    req_n = 1'b0;  stepped_n = 3'd0;
+                    cidx_n = 6'd0;  motor_n = 2'd0;  bits_n = 7'd0;
+                    cs_n = 1'b1;  sck_n = 1'b1;
+                    state_n = SETUP;  cnt_n = t_p;
+                end else begin
+                    req_n = request;
+                    stepped_n = stepped | step;
+                end
+            end
+        end
+    end
+
+    always @(posedge clk) begin
+        if (rst) begin
+            state <= IDLE;  cnt <= 10'd0;  cidx <= 6'd0;  motor <= 2'd0;  bits <= 7'd0;
+            req <= 1'b0;  stepped <= 3'd0;  nxm <= 1'b0;
+            cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
+            cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b0;
+            cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;  cupd_top <= 3'd0;
+        end else begin
+            state <= state_n;  cnt <= cnt_n;  cidx <= cidx_n;  motor <= motor_n;
+            bits <= bits_n;  req <= req_n;  stepped <= stepped_n;  nxm <= nxm_n;
+            cover_busy <= cover_busy_n;  dgw_busy <= dgw_busy_n;  readback <= readback_n;
+            cs <= cs_n;  sck <= sck_n;  sdo <= sdo_n;
+            if (run & spi_mode) begin
+                cupd0 <= cupd0 + {9'd0, cu_tick[0]};
+                cupd1 <= cupd1 + {9'd0, cu_tick[1]};
+                cupd2 <= cupd2 + {9'd0, cu_tick[2]};
+                cupd_top <= {cupd2 + {9'd0, cu_tick[2]} == 10'd1023,
+                             cupd1 + {9'd0, cu_tick[1]} == 10'd1023,
+                             cupd0 + {9'd0, cu_tick[0]} == 10'd1023};
+            end
+        end
+    end
+
+    // snapshot, cover latch, bit pipeline: no reset needed (written before use)
+    always @(posedge clk) begin
+        if (start) begin
+            snap_w    <= ustep;
+            snap_is   <= i_scale;
+            snap_dir  <= dir;
+            snap_step <= stepped | step;
+            snap_pol  <= {pol_dac_ab, pol_fd_ab, pol_ph_ab};
+            cov_pos   <= cover_pos;
+            cov_len   <= (cover_len > 5'd24) ? 5'd24 : cover_len;
+            cov_data  <= cover_datagram;
+        end else if (shift) begin
+            // the NxM gap: the next motor's snapshot moves to slot 0
+            snap_w    <= {snap_w[23:16], snap_w[23:8]};
+            snap_is   <= {snap_is[8:6], snap_is[8:3]};
+            snap_dir  <= {snap_dir[2], snap_dir[2:1]};
+            snap_step <= {snap_step[2], snap_step[2:1]};
+        end
+        if (run & spi_mode & rd_lut)
+            cfg <= ram_q;
+        if (run & spi_mode & pre_dac) begin
+            dac     <= dac_nx;
+            cov_sel <= cov_in;
+            cov_bit <= cov_data[cov_i];
+        end
+    end
+endmodule
+
+`default_nettype wire

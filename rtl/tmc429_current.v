@@ -1,0 +1,59 @@
+// tmc429_current: current-scale selection of one motor (docs/model-contract.md C75-C77;
+// TMC428 §8.9 Table 8-2, TMC429 §8.1.9).
+//
+// At each ramp tick of the motor (`tick`, C40), from the old state: moving (V != 0) selects
+// is_agtat when a_threshold <= 1023 and |a_actual| > a_threshold, else is_aleat, and clears
+// the rest counter; at rest the 8-bit counter counts up to 255 and is_v0 is selected when it
+// reaches 255 (the previous selection holds while it counts). Between ramp ticks the
+// selection holds. Power-on: is_aleat, counter 0. `i_scale` is the selected register value
+// of the current state. Same function as tmc429_model::current::CurrentScale.
+`default_nettype none
+
+module tmc429_current (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire        tick,          // ramp tick of this motor (and not powered down)
+    input  wire        v_nz,          // internal velocity V != 0
+    input  wire [11:0] a_actual,      // signed velocity change of the last ramp tick
+    input  wire [10:0] a_threshold,
+    input  wire [2:0]  is_agtat,
+    input  wire [2:0]  is_aleat,
+    input  wire [2:0]  is_v0,
+    output reg  [2:0]  i_scale
+);
+    localparam SEL_ALEAT = 2'd0, SEL_AGTAT = 2'd1, SEL_V0 = 2'd2;
+
+    reg [7:0] v0_count;
+    reg [1:0] sel;
+
+    wire [11:0] a_abs = a_actual[11] ? (12'd0 - a_actual) : a_actual;
+    // Table 8-2: a_threshold > 1023 always selects is_aleat
+    wire        agt   = ~a_threshold[10] & (a_abs > {1'b0, a_threshold});
+
+    always @(posedge clk) begin
+        if (rst) begin
+            v0_count <= 8'd0;
+            sel      <= SEL_ALEAT;
+        end else if (tick) begin
+            if (v_nz) begin
+                v0_count <= 8'd0;
+                sel      <= agt ? SEL_AGTAT : SEL_ALEAT;
+            end else begin
+                if (v0_count != 8'd255)
+                    v0_count <= v0_count + 8'd1;
+                if (v0_count >= 8'd254)          // the count reaches 255 now (or is there)
+                    sel <= SEL_V0;
+            end
+        end
+    end
+
+    always @(*) begin
+        case (sel)
+        SEL_AGTAT: i_scale = is_agtat;
+        SEL_V0:    i_scale = is_v0;
+        default:   i_scale = is_aleat;
+        endcase
+    end
+endmodule
+
+`default_nettype wire

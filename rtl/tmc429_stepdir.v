@@ -1,0 +1,97 @@
+// tmc429_stepdir: the Step/Dir output of one motor (docs/model-contract.md C91-C96;
+// TMC429 §10, §8.2.4; TMC4210).
+//
+// A state machine with one down-counter:
+//   READY --backlog != 0, same direction--> PULSE (STEP active or toggled, T edges)
+//     -> SPACE (STEP inactive, T edges; skipped with step_half) -> READY
+//   READY --backlog != 0, other direction--> DIRSET (DIR changed, T edges) -> READY
+// with T = t_STEP = 16 (1 + STPDIV) CLK (C93, C94). Steps of the motion core (old state,
+// C70) add +-1 to a 24-bit signed backlog; READY takes the step of the same edge into
+// account (C95). While disabled (`en` = 0: not in Step/Dir mode) the unit is held in its
+// reset state; while powered down (`run` = 0) it holds (C66).
+//
+// `step_n` / `dir_n` are the levels of the new state (before inv_stp / inv_dir), for the
+// output pin registers. Same function as tmc429_model::stepdir::StepDir.
+`default_nettype none
+
+module tmc429_stepdir (
+    input  wire       clk,
+    input  wire       rst,
+    input  wire       run,         // not powered down
+    input  wire       en,          // Step/Dir mode (old state)
+    input  wire       step_in,     // the motion core stepped (old state)
+    input  wire       dir_in,      // direction of that step, 1 = negative
+    input  wire [3:0] stpdiv,      // clk2_div[3:0]
+    input  wire       step_half,
+    output reg        step,        // STEP level before inv_stp (toggle state with step_half)
+    output reg        dir,         // DIR level before inv_dir, 1 = negative
+    output reg        step_n,
+    output reg        dir_n
+);
+    localparam READY = 2'd0, PULSE = 2'd1, SPACE = 2'd2, DIRSET = 2'd3;
+
+    reg [1:0]  state, state_n;
+    reg [8:0]  cnt, cnt_n;
+    reg [23:0] backlog, backlog_n;
+
+    wire [8:0]  t_step = {stpdiv + 5'd1, 4'd0};
+    wire [23:0] bl     = backlog + (step_in ? (dir_in ? 24'hFFFFFF : 24'd1) : 24'd0);
+    wire        neg    = bl[23];
+
+    always @(*) begin
+        state_n   = state;
+        cnt_n     = cnt;
+        backlog_n = backlog;
+        step_n    = step;
+        dir_n     = dir;
+        if (run) begin
+            if (!en) begin
+                state_n   = READY;
+                cnt_n     = 9'd0;
+                backlog_n = 24'd0;
+                step_n    = 1'b0;
+                dir_n     = 1'b0;
+            end else begin
+                backlog_n = bl;
+                if (state != READY && cnt > 9'd1) begin
+                    cnt_n = cnt - 9'd1;
+                end else if (state == PULSE && !step_half) begin
+                    step_n  = 1'b0;
+                    state_n = SPACE;
+                    cnt_n   = t_step;
+                end else begin
+                    state_n = READY;
+                    if (bl != 24'd0) begin
+                        cnt_n = t_step;
+                        if (neg != dir) begin
+                            dir_n   = neg;             // C94: DIR first, STEP T later
+                            state_n = DIRSET;
+                        end else begin
+                            step_n    = step_half ? ~step : 1'b1;
+                            backlog_n = bl + (neg ? 24'd1 : 24'hFFFFFF);
+                            state_n   = PULSE;
+                        end
+                    end
+                end
+            end
+        end
+    end
+
+    always @(posedge clk) begin
+        if (rst) begin
+            state   <= READY;
+            cnt     <= 9'd0;
+            backlog <= 24'd0;
+            step    <= 1'b0;
+            dir     <= 1'b0;
+        end else begin
+            state   <= state_n;
+            cnt     <= cnt_n;
+            backlog <= backlog_n;
+            step    <= step_n;
+            dir     <= dir_n;
+        end
+    end
+endmodule
+
+`default_nettype wire
