@@ -296,7 +296,7 @@ fn bad_usage_exits_2_without_files() {
     for (args, msg) in [
         (vec!["--unit", "motor", "--scenario", "datasheet", "--out", d], "unknown unit"),
         (vec!["--unit", "spi", "--scenario", "nope", "--out", d], "neither a built-in scenario"),
-        (vec!["--unit", "ramp", "--scenario", "ramp-modes", "--format", "pins", "--out", d], "need its RTL module"),
+        (vec!["--unit", "ramp", "--scenario", "ramp-modes", "--format", "pins", "--out", d], "need the model to show its RTL ports"),
         (vec!["--unit", "chip", "--scenario", "datasheet", "--format", "csv", "--out", d], "pin-level vectors only"),
         (vec!["--unit", "lut", "--scenario", "datasheet", "--out", d], "use --scenario tables"),
         (vec!["--unit", "spi", "--scenario", s, "--out", d], "bad.txt:2: expected a decimal cycle count"),
@@ -488,5 +488,63 @@ fn run_writes_the_vectors_of_a_scenario() {
     assert_eq!(o.status.code(), Some(2));
     assert!(o.stdout.is_empty());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--vectors /proc/nonexistent/v: cannot create"));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Pin-level lut vectors (tmc429_microstep): Table 12-4 / 12-2 / 8-1 values at the unit's ports,
+/// a clean replay, and a flipped expected bit in a copy that the replay reports at its line and
+/// column (not as a corrupt file: the check digit is flipped with it).
+#[test]
+fn lut_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("lutpins");
+    export(&dir, &["--unit", "lut", "--scenario", "tables", "--format", "pins"]);
+    let stem = dir.join("lut-tables-tmc429");
+    assert_eq!(meta(&stem, "cycles"), (2 * 2 * 2 * 8 * (4 + 8 + 16 + 32 + 64 + 128 + 256 + 256)).to_string());
+    assert_eq!(meta(&stem, "width"), "56");
+    let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = hex.lines().collect();
+    // word: A | w 8 | coil_b 1 | lut 6 | i_scale 3 | code 5 | dac_q 6 | neg, step, pol 5 | lut_idx 6 | dac 6 | bit_out 1 | _check 5
+    let field = |l: &str, lo: u32, w: u32| (u64::from_str_radix(l, 16).unwrap() >> lo) & ((1 << w) - 1);
+    let ports = |l: &str| (field(l, 44, 8), field(l, 43, 1), field(l, 37, 6), field(l, 12, 6), field(l, 6, 6));
+    // sine, usrs 0, +, i_scale 0, row 1 (w = 64, Table 12-4): coil A reads sin index 63 = 63, coil B cos index 0 = 0
+    assert_eq!(ports(lines[2]), (64, 0, 63, 63, 63));
+    assert_eq!(ports(lines[3]), (64, 1, 0, 0, 0));
+    // i_scale %100 (Table 8-1): rows 4·4 + 1 → (63 · 4) >> 3 = 31
+    assert_eq!(ports(lines[2 * (4 * 4 + 1)]), (64, 0, 63, 63, 31));
+
+    let vvp = dir.join("tb_lut.vvp");
+    let o = Command::new("iverilog")
+        .args(["-g2005", "-P", "tb_lut.CHIP=1", "-I"])
+        .arg(root().join("vectors/tb"))
+        .arg("-o")
+        .arg(&vvp)
+        .arg(root().join("vectors/tb/tb_lut.v"))
+        .arg(root().join("rtl/tmc429_microstep.v"))
+        .output()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = replay(&vvp, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{} passed, 0 failed", lines.len()), "{out:?}");
+
+    // flip bit_out (bit 1 of digit 12) of line 1000 and the same bit of the check digit
+    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let b = bad[1000].as_bytes().to_vec();
+    let expected = (field(lines[1000], 5, 1), field(lines[1000], 5, 1) ^ 1);
+    let mut s: String = b[..12].iter().map(|c| *c as char).collect();
+    s.push(flip(b[12], 2));
+    s.push(flip(b[13], 2));
+    bad[1000] = s;
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let out = replay(&vvp, &stem, Some(&planted));
+    assert_eq!(
+        out[..2],
+        [
+            format!("MISMATCH cycle 1000 column bit_out: expected {} got {}", expected.1, expected.0),
+            format!("{} passed, 1 failed", lines.len() - 1)
+        ],
+        "{out:?}"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
