@@ -376,7 +376,7 @@ fn toml_scenario_vectors() {
 
     export(&dir, &["--unit", "chip", "--scenario", &f]);
     let stem = dir.join("chip-ramp-move-tmc429");
-    for (k, v) in [("cycles", "1920001"), ("fclk", "32000000"), ("scenario", "ramp-move"), ("chip", "tmc429"), ("replay", "pending-motion-core")] {
+    for (k, v) in [("cycles", "1920001"), ("fclk", "32000000"), ("scenario", "ramp-move"), ("chip", "tmc429"), ("replay", "ready"), ("mask", "7FF"), ("not_compared", "-")] {
         assert_eq!(meta(&stem, k), v, "{k}");
     }
     assert_eq!(std::fs::read_to_string(stem.with_extension("hex")).unwrap().lines().count(), 1_920_001);

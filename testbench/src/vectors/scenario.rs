@@ -68,9 +68,6 @@ pub struct Scenario {
     pub source: Source,
     /// What the scenario does (recorded in `.meta`).
     pub notes: Vec<String>,
-    /// Keeps the motors in HOLD_MODE and the driver chain idle: replayable on an RTL without
-    /// motion core and driver chain.
-    pub hold_only: bool,
 }
 
 /// The built-in scenarios: name and what they are for.
@@ -303,17 +300,17 @@ fn regmap_cells() -> [u8; 36] {
 
 /// Looks up a built-in scenario. `cycles`: length of `random`.
 pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Option<Scenario> {
-    let (b, hold_only) = match name {
-        "datasheet" => (datasheet(), true),
-        "registers" => (registers(chip), true),
-        "chip-hold" => (chip_hold(), true),
-        "reference-search" => (reference_search(), false),
-        "ramp-modes" => (ramp_modes(), false),
-        "ramp-boundary" => (ramp_boundary(), false),
-        "ramp-p-examples" => (ramp_p_examples(), false),
-        "chain-datasheet" => (chain_datasheet(), false),
+    let b = match name {
+        "datasheet" => datasheet(),
+        "registers" => registers(chip),
+        "chip-hold" => chip_hold(),
+        "reference-search" => reference_search(),
+        "ramp-modes" => ramp_modes(),
+        "ramp-boundary" => ramp_boundary(),
+        "ramp-p-examples" => ramp_p_examples(),
+        "chain-datasheet" => chain_datasheet(),
         // the lut unit's tables need no pins
-        "tables" => (B::default(), true),
+        "tables" => B::default(),
         "random" => {
             return Some(Scenario {
                 name: name.into(),
@@ -322,7 +319,6 @@ pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Opt
                 seed,
                 source: Source::Random { cycles, profile: Profile::Registers },
                 notes: vec!["co-simulation stimulus, register profile (docs/cosim.md)".into()],
-                hold_only: true,
             })
         }
         _ => return None,
@@ -337,7 +333,6 @@ pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Opt
         seed: 0,
         source: Source::Script { lines: b.lines, sck_half: SCK_HALF },
         notes: vec![desc],
-        hold_only,
     })
 }
 
@@ -358,7 +353,6 @@ pub fn from_file(path: &Path, chip: Chip, fclk: u64, sck_half: u32) -> Result<Sc
         seed: 0,
         source: Source::Script { lines, sck_half },
         notes: vec![format!("datagram script {}", path.display())],
-        hold_only: false,
     })
 }
 
