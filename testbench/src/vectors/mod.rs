@@ -47,12 +47,12 @@ impl Unit {
     }
 
     /// The forms this unit has today. Pin-level vectors of a unit need the same boundary in the
-    /// model as its RTL module: the SPI slave and the microstep LUT unit have it; the
-    /// ramp/pulse generator and the driver-chain master not yet.
+    /// model as its RTL module: the SPI slave, the ramp/pulse generator and the microstep LUT
+    /// unit have it; the driver-chain master not yet.
     pub fn has(self, f: Form) -> bool {
         matches!(
             (self, f),
-            (Unit::Spi | Unit::Lut, _) | (Unit::Chip, Form::Pins) | (Unit::Ramp | Unit::Chain, Form::Csv)
+            (Unit::Spi | Unit::Ramp | Unit::Lut, _) | (Unit::Chip, Form::Pins) | (Unit::Chain, Form::Csv)
         )
     }
 }
@@ -178,6 +178,7 @@ pub fn export_units(sc: &Scenario, set: &[(Unit, Vec<Form>)], dir: &Path) -> Res
                 (Unit::Chip, Form::Pins) => Box::new(record::ChipPins::create(&stem)?),
                 (Unit::Spi, Form::Pins) => Box::new(record::SpiPins::create(&stem)?),
                 (Unit::Spi, Form::Csv) => Box::new(record::SpiCsv::create(&stem.with_extension("csv"), sc.chip)?),
+                (Unit::Ramp, Form::Pins) => Box::new(record::RampPins::create(&stem)?),
                 (Unit::Ramp, Form::Csv) => Box::new(record::RampCsv::create(&stem.with_extension("csv"))?),
                 (Unit::Chain, Form::Csv) => Box::new(record::ChainCsv::create(&stem.with_extension("csv"))?),
                 _ => return Err(format!("unit {unit}: no {f:?} form")),
