@@ -296,7 +296,6 @@ fn bad_usage_exits_2_without_files() {
     for (args, msg) in [
         (vec!["--unit", "motor", "--scenario", "datasheet", "--out", d], "unknown unit"),
         (vec!["--unit", "spi", "--scenario", "nope", "--out", d], "neither a built-in scenario"),
-        (vec!["--unit", "chain", "--scenario", "chain-datasheet", "--format", "pins", "--out", d], "need the model to show its RTL ports"),
         (vec!["--unit", "chip", "--scenario", "datasheet", "--format", "csv", "--out", d], "pin-level vectors only"),
         (vec!["--unit", "lut", "--scenario", "datasheet", "--out", d], "use --scenario tables"),
         (vec!["--unit", "spi", "--scenario", s, "--out", d], "bad.txt:2: expected a decimal cycle count"),
@@ -617,6 +616,68 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
     assert_eq!(
         out[..2],
         [format!("MISMATCH cycle {k} column stop: expected {} got {was}", was ^ 1), format!("{} passed, 1 failed", cycles - 1)],
+        "{out:?}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Pin-level vectors of the driver-chain master (tmc429_chain) of the chain-unit set replay
+/// clean on the RTL; the en_sd abort (C89) gives the taken cover and datagram-word flags back;
+/// a flipped expected SDO_S bit in a copy of the file is reported at its line and column.
+#[test]
+fn chain_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("chainpins");
+    export(&dir, &["--unit", "chain", "--scenario", "chain-unit", "--format", "pins"]);
+    let stem = dir.join("chain-chain-unit-tmc429");
+    assert_eq!((meta(&stem, "width").as_str(), meta(&stem, "in_width").as_str(), meta(&stem, "out_width").as_str()), ("200", "103", "88"));
+    let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = hex.lines().collect();
+    let cycles: usize = meta(&stem, "cycles").parse().unwrap();
+    assert_eq!(lines.len(), cycles);
+    // word bits: A 199..196 | inputs 195..93 (rst 195, spi_mode 193, cw 136, dgw 135)
+    // | outputs 92..5 (cover_busy 81, dgw_busy 80, cs 31, sdo 29, state 21..19) | _check 4..0
+    let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
+    let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
+    assert_eq!((field(lines[0], 195, 1), field(lines[1], 195, 1)), (1, 0));
+    // the abort: a busy chain sees spi_mode 0, goes to IDLE with CS inactive; the next line
+    // presents cw and dgw waiting again (the register file took them back, C89)
+    let a = (1..cycles).find(|&k| field(lines[k], 193, 1) == 0).expect("an en_sd abort");
+    assert_ne!(field(lines[a - 1], 19, 3), 0, "busy before the abort");
+    assert_eq!((field(lines[a - 1], 81, 1), field(lines[a - 1], 80, 1)), (1, 1));
+    assert_eq!((field(lines[a], 19, 3), field(lines[a], 31, 1), field(lines[a], 81, 1), field(lines[a], 80, 1)), (0, 0, 0, 0));
+    assert_eq!((field(lines[a + 1], 136, 1), field(lines[a + 1], 135, 1)), (1, 1));
+
+    let vvp = dir.join("tb_chain.vvp");
+    let o = Command::new("iverilog")
+        .args(["-g2005", "-P", "tb_chain.CHIP=1", "-I"])
+        .arg(root().join("vectors/tb"))
+        .arg("-o")
+        .arg(&vvp)
+        .arg(root().join("vectors/tb/tb_chain.v"))
+        .arg(root().join("rtl/tmc429_chain.v"))
+        .arg(root().join("rtl/tmc429_microstep.v"))
+        .output()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = replay(&vvp, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
+
+    // flip `sdo` (word bit 29: bit 1 of the 8th digit from the right) of the first line with
+    // SDO_S high, and the same bit of the check digit (the last)
+    let k = lines.iter().position(|l| field(l, 29, 1) == 1).expect("an SDO_S high bit");
+    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let mut c: Vec<char> = bad[k].chars().collect();
+    let n = c.len();
+    c[n - 1 - 7] = flip(c[n - 1 - 7] as u8, 2);
+    c[n - 1] = flip(c[n - 1] as u8, 2);
+    bad[k] = c.into_iter().collect();
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let out = replay(&vvp, &stem, Some(&planted));
+    assert_eq!(
+        out[..2],
+        [format!("MISMATCH cycle {k} column sdo: expected 0 got 1"), format!("{} passed, 1 failed", cycles - 1)],
         "{out:?}"
     );
     std::fs::remove_dir_all(&dir).ok();

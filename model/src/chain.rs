@@ -58,6 +58,47 @@ pub fn timing(clk2_div: u32) -> (u16, u16, u16, u16) {
     (lo, hi, p, g)
 }
 
+/// The inputs of the driver-chain master at its RTL boundary (`tmc429_chain`, rtl/README.md
+/// "Unit ports"): levels of the old state, presented before a CLK edge (C70). Bit m / element m
+/// is motor m. `clk2_div` is the register of the state (the RTL takes it as `clk2_div_nx` of
+/// the line before).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ChainInputs {
+    pub run: bool,
+    pub spi_mode: bool,
+    pub step: u8,
+    pub dir: u8,
+    pub ustep: [u8; 3],
+    pub i_scale: [u8; 3],
+    pub ramp_tick: u8,
+    pub clk2_div: u8,
+    pub lsmd: u8,
+    pub pol_ph_ab: bool,
+    pub pol_fd_ab: bool,
+    pub pol_dac_ab: bool,
+    pub cont_update: bool,
+    pub cw: bool,
+    pub dgw: bool,
+    pub cover_pos: u8,
+    pub cover_len: u8,
+    pub cover_datagram: u32,
+    pub sdi_s: bool,
+}
+
+/// The RAM read of the state `c` (C80): `Some((cell, is_cfg))` at the edge with cnt = 4 (the
+/// bit's configuration cell) or cnt = 3 (its LUT cell; the cell then depends on the value the
+/// read port holds, bit 3 = coil B) of SETUP, HIGH or GAP.
+pub fn ram_read(c: &Chain, ram_q: u8) -> Option<(u8, bool)> {
+    if !matches!(c.state, SETUP | HIGH | GAP) {
+        return None;
+    }
+    match c.cnt {
+        4 => Some((if c.state == HIGH { (c.cell + 1) & 63 } else { c.cell & 63 }, true)),
+        3 => Some((microstep::lut_cell(c.snap_w[(c.motor as usize).min(2)], ram_q) as u8, false)),
+        _ => None,
+    }
+}
+
 /// Driver-chain state.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Chain {

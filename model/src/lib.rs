@@ -325,6 +325,57 @@ impl Tmc429 {
         }
     }
 
+    /// The inputs the driver-chain master sees before the next edge: the levels of the current
+    /// state ([`chain::ChainInputs`]). With the chain state after that edge and
+    /// [`Tmc429::chain_step`] this is the boundary of `rtl/tmc429_chain.v` (test vectors,
+    /// docs/vectors.md; rtl/README.md "Unit ports").
+    pub fn chain_inputs(&self) -> chain::ChainInputs {
+        let g = &self.global;
+        let mut i = chain::ChainInputs {
+            run: !self.power_down,
+            spi_mode: self.spi_mode(),
+            lsmd: g.g(f::LSMD) as u8,
+            pol_ph_ab: g.g(f::POL_PH_AB) != 0,
+            pol_fd_ab: g.g(f::POL_FD_AB) != 0,
+            pol_dac_ab: g.g(f::POL_DAC_AB) != 0,
+            cont_update: g.g(f::CONT_UPDATE) != 0,
+            cw: g.cw,
+            dgw: g.dgw,
+            cover_pos: g.cover_pos & 63,
+            cover_len: g.cover_len & 31,
+            cover_datagram: g.cover_datagram & 0xFF_FFFF,
+            sdi_s: (self.sync.s2 >> sync::bit::SDI_S) & 1 != 0,
+            clk2_div: g.g(f::CLK2_DIV) as u8,
+            ..Default::default()
+        };
+        if self.prescaler & 31 == PHASE_RAMP {
+            let frame = self.prescaler >> 5;
+            for (m, mo) in self.motors.iter().enumerate() {
+                let mask = (1u32 << mo.ramp_div) - 1;
+                i.ramp_tick |= (((frame & mask) == mask) as u8) << m;
+            }
+        }
+        for (m, mo) in self.motors.iter().enumerate() {
+            i.step |= (mo.step as u8) << m;
+            i.dir |= (mo.dir as u8) << m;
+            i.ustep[m] = mo.ustep;
+            i.i_scale[m] = self.cur[m].i_scale(mo);
+        }
+        i
+    }
+
+    /// One edge of a copy `c` of the driver chain (with a copy `g` of the global registers) in
+    /// the world of the current state: its RAM, motors, current scales, ramp ticks and SDI_S.
+    /// This is the chain's edge of [`Tmc429::tick`] (C80–C89); nothing happens when powered
+    /// down (C66). Gives the RTL's next-state outputs (`cs_n`, `take`, ...) for test vectors.
+    pub fn chain_step(&self, c: &mut chain::Chain, g: &mut Global) {
+        if self.power_down || self.chip == Chip::Tmc4210 {
+            return;
+        }
+        let i = self.chain_inputs();
+        c.tick(i.spi_mode, &self.ram, g, &self.motors, &self.cur, i.ramp_tick, i.sdi_s);
+    }
+
     /// One rising edge of CLK (C1).
     #[inline]
     pub fn tick(&mut self, inp: &Inputs) -> Outputs {

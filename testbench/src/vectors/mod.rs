@@ -47,12 +47,12 @@ impl Unit {
     }
 
     /// The forms this unit has today. Pin-level vectors of a unit need the same boundary in the
-    /// model as its RTL module: the SPI slave, the ramp/pulse generator and the microstep LUT
-    /// unit have it; the driver-chain master not yet.
+    /// model as its RTL module: the SPI slave, the ramp/pulse generator, the microstep LUT unit
+    /// and the driver-chain master have it; the chip has pin-level vectors only.
     pub fn has(self, f: Form) -> bool {
         matches!(
             (self, f),
-            (Unit::Spi | Unit::Ramp | Unit::Lut, _) | (Unit::Chip, Form::Pins) | (Unit::Chain, Form::Csv)
+            (Unit::Spi | Unit::Ramp | Unit::Lut | Unit::Chain, _) | (Unit::Chip, Form::Pins)
         )
     }
 }
@@ -112,10 +112,6 @@ pub fn forms(unit: Unit, format: Format) -> Result<Vec<Form>, String> {
     if have.is_empty() {
         return Err(match (unit, format) {
             (Unit::Chip, _) => "unit chip has pin-level vectors only: use --format pins".to_string(),
-            (_, Format::Pins) => format!(
-                "pin-level vectors of the {unit} unit need the model to show its RTL ports, which it \
-                 does not yet (docs/vectors.md); --format csv gives its transaction-level vectors"
-            ),
             _ => format!("unit {unit} has no {format:?} vectors"),
         });
     }
@@ -180,6 +176,7 @@ pub fn export_units(sc: &Scenario, set: &[(Unit, Vec<Form>)], dir: &Path) -> Res
                 (Unit::Spi, Form::Csv) => Box::new(record::SpiCsv::create(&stem.with_extension("csv"), sc.chip)?),
                 (Unit::Ramp, Form::Pins) => Box::new(record::RampPins::create(&stem)?),
                 (Unit::Ramp, Form::Csv) => Box::new(record::RampCsv::create(&stem.with_extension("csv"))?),
+                (Unit::Chain, Form::Pins) => Box::new(record::ChainPins::create(&stem)?),
                 (Unit::Chain, Form::Csv) => Box::new(record::ChainCsv::create(&stem.with_extension("csv"))?),
                 _ => return Err(format!("unit {unit}: no {f:?} form")),
             };

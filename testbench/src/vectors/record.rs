@@ -160,6 +160,170 @@ impl Recorder for SpiPins {
     }
 }
 
+// ---- driver-chain master pins -------------------------------------------------------------
+
+/// The ports of `tmc429_chain` (rtl/tmc429_chain.v, rtl/README.md "Unit ports"), inputs then
+/// outputs. The testbench compares `ram_addr` only while `ram_re` (the column holds 0 otherwise).
+pub fn chain_layout() -> Layout {
+    Layout::new(vec![
+        input("rst", 1),
+        input("run", 1),
+        input("spi_mode", 1),
+        input("step", 3),
+        input("dir", 3),
+        input("ustep", 24),
+        input("i_scale", 9),
+        input("ramp_tick", 3),
+        input("clk2_div_nx", 8),
+        input("lsmd", 2),
+        input("pol_ph_ab", 1),
+        input("pol_fd_ab", 1),
+        input("pol_dac_ab", 1),
+        input("cont_update", 1),
+        input("cw", 1),
+        input("dgw", 1),
+        input("cover_pos", 6),
+        input("cover_len", 5),
+        input("cover_datagram", 24),
+        input("sdi_s", 1),
+        input("ram_q", 6),
+        output("ram_re", 1),
+        output("ram_addr", 7),
+        output("take", 1),
+        output("ret_cw", 1),
+        output("ret_dgw", 1),
+        output("cover_busy", 1),
+        output("dgw_busy", 1),
+        output("readback", 48),
+        output("cs", 1),
+        output("sck", 1),
+        output("sdo", 1),
+        output("motor", 2),
+        output("cs_n", 1),
+        output("sck_n", 1),
+        output("sdo_n", 1),
+        output("motor_n", 2),
+        output("state", 3),
+        output("cidx", 6),
+        output("bits", 7),
+        output("req", 1),
+    ])
+}
+
+/// The driver-chain master's boundary, one line per CLK edge. The model has neither the RTL's
+/// RAM read port nor its take/return handshake, so this recorder rebuilds them (C80, C88, C89):
+/// `ram_re`/`ram_addr` from the chain state ([`chain::ram_read`]), `ram_q` as the cell the
+/// model's chain read at the last edge with a read (its `cfg` or `lut`), and the next-state
+/// outputs (`*_n`, `take`) by one more edge of a copy of the new chain state with the line's
+/// inputs ([`Tmc429::chain_step`] of the state before the edge): the RTL's combinational
+/// outputs are compared after the edge, with the line's inputs still applied.
+pub struct ChainPins {
+    w: PinWriter,
+    /// The chip before the next edge, and the chain inputs it presents.
+    pre: Option<Box<Tmc429>>,
+    pre_i: chain::ChainInputs,
+    /// The value the RAM read port holds before the next edge.
+    ram_q: u8,
+}
+
+impl ChainPins {
+    pub fn create(stem: &std::path::Path) -> Result<ChainPins, String> {
+        Ok(ChainPins { w: PinWriter::create(stem, chain_layout())?, pre: None, pre_i: Default::default(), ram_q: 0 })
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn line(&mut self, rst: bool, i: &chain::ChainInputs, ram_q: u8, clk2_div_nx: u8, new: &chain::Chain, d: &chain::Chain, readback: u64) -> Result<(), String> {
+        let rd = if i.run && i.spi_mode { chain::ram_read(new, ram_q) } else { None };
+        let abort = i.run && !i.spi_mode && (new.state != chain::IDLE || new.cs || new.req || new.stepped != 0);
+        let take = d.state == chain::SETUP && new.state != chain::SETUP;
+        let tri = |a: [u8; 3], w: u32| (a[2] as u64) << (2 * w) | (a[1] as u64) << w | a[0] as u64;
+        let v = [
+            rst as u64,
+            i.run as u64,
+            i.spi_mode as u64,
+            i.step as u64,
+            i.dir as u64,
+            tri(i.ustep, 8),
+            tri(i.i_scale, 3),
+            i.ramp_tick as u64,
+            clk2_div_nx as u64,
+            i.lsmd as u64,
+            i.pol_ph_ab as u64,
+            i.pol_fd_ab as u64,
+            i.pol_dac_ab as u64,
+            i.cont_update as u64,
+            i.cw as u64,
+            i.dgw as u64,
+            i.cover_pos as u64,
+            i.cover_len as u64,
+            i.cover_datagram as u64,
+            i.sdi_s as u64,
+            ram_q as u64,
+            rd.is_some() as u64,
+            rd.map_or(0, |(c, _)| c as u64),
+            take as u64,
+            (abort && new.cover_busy) as u64,
+            (abort && new.dgw_busy) as u64,
+            new.cover_busy as u64,
+            new.dgw_busy as u64,
+            readback,
+            new.cs as u64,
+            new.sck as u64,
+            new.sdo as u64,
+            new.motor as u64,
+            d.cs as u64,
+            d.sck as u64,
+            d.sdo as u64,
+            d.motor as u64,
+            new.state as u64,
+            new.cell as u64,
+            new.bits as u64,
+            new.req as u64,
+        ];
+        self.w.line(&v)
+    }
+}
+
+impl Recorder for ChainPins {
+    fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
+        let c = *chip.chain();
+        self.line(true, &Default::default(), 0, 0, &c, &c, chip.global().readback)?;
+        self.pre = Some(Box::new(chip.clone()));
+        self.pre_i = chip.chain_inputs();
+        self.ram_q = 0;
+        Ok(())
+    }
+    fn edge(&mut self, chip: &Tmc429, _inp: &Inputs, _out: &Outputs) -> Result<(), String> {
+        let pre = self.pre.take().ok_or("chain recorder: edge before reset")?;
+        let i = self.pre_i;
+        let new = *chip.chain();
+        let mut d = new;
+        let mut g = *pre.global();
+        pre.chain_step(&mut d, &mut g);
+        let q = self.ram_q;
+        let post_i = chip.chain_inputs();
+        self.line(false, &i, q, post_i.clk2_div, &new, &d, chip.global().readback)?;
+        if i.run && i.spi_mode {
+            if let Some((_, cfg)) = chain::ram_read(pre.chain(), q) {
+                self.ram_q = if cfg { new.cfg } else { new.lut };
+            }
+        }
+        self.pre = Some(Box::new(chip.clone()));
+        self.pre_i = post_i;
+        Ok(())
+    }
+    fn finish(self: Box<Self>, meta: &Meta) -> Result<Vec<AtomicFile>, String> {
+        let mut meta = meta.clone();
+        meta.notes.push(
+            "combinational outputs (ram_re, ram_addr, take, ret_cw, ret_dgw, *_n) of the state after the edge \
+             with the line's inputs; ram_addr compared while ram_re (0 otherwise); ram_q is the cell read at \
+             the last edge with ram_re"
+                .into(),
+        );
+        self.w.finish(meta)
+    }
+}
+
 // ---- ramp unit pins -------------------------------------------------------------------------
 
 /// The ports of `tmc429_ramp` (rtl/tmc429_ramp.v, rtl/README.md "The ramp unit"), inputs then

@@ -81,6 +81,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("ramp-p-examples", "RAMP_MODE moves with the pmul/pdiv of the [428] §8.11 method (digest §5.5 rows)"),
     ("ramp-unit", "the ramp unit in few cycles: RAMP_MODE and SOFT_MODE with the [428] §8.11 p example 2047/0/0, a soft switch stop and the latch, VELOCITY_MODE at a_max 2047 across x = 2^23 and back, a_max 0, HOLD_MODE with a v_actual write of -2048, usrs 7, a ustep_count write"),
     ("chain-datasheet", "Table 11-2 configuration, Table 12-2 LUT, the digest §5.2 datagrams and a cover datagram"),
+    ("chain-unit", "the driver-chain master in few cycles: power-on Table 11-2 and LUT, clk2_div 0 (asymmetric SCK_S), a cover datagram of length 0 and one of 12 bits at position 3, i_scale %100, a datagram-word write (CDGW), SDI_S readback, a datagram aborted by en_sd and restarted"),
     ("tables", "lut unit: complete tables, every usrs, both directions, every i_scale, sine and rhomb LUT"),
     ("random", "the co-simulation's seeded random register traffic (--seed, --cycles)"),
 ];
@@ -315,6 +316,23 @@ fn chain_datasheet() -> B {
     b
 }
 
+/// The driver-chain master's pin-level golden set (unit `chain`): the TMC429's power-on RAM
+/// (Table 11-2 with One, the sine LUT), clk2_div 0 (LO 1, HI 15 edges, TMC428 §9.7), LSMD 2.
+fn chain_unit() -> B {
+    let mut b = B::default();
+    b.g(15, 0x0002);
+    // a cover datagram of length 0 sends the unchanged datagram: w = (0,0,0)
+    b.g(2, 0).g(3, 0).wait(700);
+    // w = 16 and i_scale %100 for motor 0; SDI_S high during the datagram (readback)
+    b.m(0, 15, 16).m(0, 8, 4 << 20 | 4 << 16 | 4 << 12).g(3, 0).wait(200).pin(Pin::SdiS, true).wait(500);
+    b.pin(Pin::SdiS, false);
+    // cover $ABC at position 3, length 12 (C85); a datagram_low_word write arms CDGW (C88)
+    b.g(2, 3 << 8 | 12).g(0, 0).g(3, 0xABC).wait(700);
+    // a datagram aborted by en_sd = 1 (C89): cover and CDGW return to waiting, then restart
+    b.g(0, 0).g(3, 0x5A5).wait(150).g(4, 1 << 5).wait(50).g(4, 0).wait(700);
+    b
+}
+
 /// Table 11-2 as RAM cells 0..35.
 fn regmap_cells() -> [u8; 36] {
     tmc429_model::ram::TABLE_11_2
@@ -331,6 +349,7 @@ pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Opt
         "ramp-boundary" => ramp_boundary(),
         "ramp-p-examples" => ramp_p_examples(),
         "ramp-unit" => ramp_unit(),
+        "chain-unit" => chain_unit(),
         "chain-datasheet" => chain_datasheet(),
         // the lut unit's tables need no pins
         "tables" => B::default(),
