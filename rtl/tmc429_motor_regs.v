@@ -43,8 +43,8 @@ module tmc429_motor_regs #(
     output wire [10:0] pulse_acc,
     output wire        step,
     output wire        dir,
-    // driver side (C75, C40): {ramp_div, is_agtat, is_aleat, is_v0, a_threshold}
-    output wire [23:0] drv_conf
+    // driver side (C75): {is_agtat, is_aleat, is_v0, a_threshold}
+    output wire [19:0] drv_conf
 );
     reg [10:0] a_max, a_threshold;
     reg [2:0]  is_agtat, is_aleat, is_v0, usrs;
@@ -87,7 +87,7 @@ module tmc429_motor_regs #(
     wire [7:0] mask_nx = w_int ? wdata[15:8] : int_mask;
     wire [7:0] w1c     = w_int ? wdata[7:0] : 8'd0;
 
-    assign drv_conf = {ramp_div, is_agtat, is_aleat, is_v0, a_threshold};
+    assign drv_conf = {is_agtat, is_aleat, is_v0, a_threshold};
     assign irq  = int_flags != 8'd0;
 
     always @(posedge clk) begin

@@ -3,7 +3,7 @@
 // TMC428 §8.6-§8.16).
 //
 // Every input is a level of the old state (C1); every output is a register of this unit
-// except the combinational condition outputs (xeqt, stop, tol_ok, v_actual, v_mag) which are
+// except the combinational condition outputs (xeqt, stop, tol_ok, v_actual) which are
 // functions of its registers and inputs. The port list is the boundary at which test vectors of
 // the unit are taken (rtl/README.md).
 //
@@ -66,8 +66,10 @@ module tmc429_ramp #(
     wire        v_neg  = v[19];
     wire        v_zero = v == 20'd0;
     wire        v_lo0  = v[7:0] == 8'd0;
-    // |V| >> 8: for V < 0, (~V + 1) >> 8 = ~V[18:8] + (V[7:0] == 0)
-    wire [10:0] v_mag  = (v[18:8] ^ {11{v_neg}}) + {10'd0, v_neg & v_lo0};
+    // |V| >> 8: for V < 0, (~V + 1) >> 8 = ~V[18:8] + (V[7:0] == 0), i.e. v_mx + v_mc; the
+    // sum is not formed on its own: its users add v_mc as the carry into their own adder
+    wire [10:0] v_mx   = v[18:8] ^ {11{v_neg}};
+    wire        v_mc   = v_neg & v_lo0;
     // sign(V) * (|V| >> 8): V >> 8 rounded toward 0
     assign v_actual = v[19:8] + {11'd0, v_neg & ~v_lo0};
 
@@ -94,9 +96,9 @@ module tmc429_ramp #(
     // ---- stop at target (C52) ------------------------------------------------------------------
     assign xeqt   = x_actual == x_target;
     /* verilator lint_off UNUSEDSIGNAL */     // borrow: |V|>>8 > v_min
-    wire [11:0] m_cmp = {1'b0, v_min} - {1'b0, v_mag};
+    wire [12:0] m_cmp = {1'b0, v_min, 1'b0} - {1'b0, v_mx, v_mc};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire at_stop  = ~rm[1] & xeqt & ~m_cmp[11];
+    wire at_stop  = ~rm[1] & xeqt & ~m_cmp[12];
     wire zero_v   = at_stop | (stop & ~soft_sw);
 
     // ---- ramp tick (C51) -------------------------------------------------------------------------
@@ -112,23 +114,32 @@ module tmc429_ramp #(
     wire [11:0] d_ge  = d[11:0] + {1'b0, a_max};                        // d >= -a: sign 0
     /* verilator lint_on UNUSEDSIGNAL */
     wire        land  = up ? (d_lo0 & ~d_le[11]) : ((d_lo1 & ~d_ge[11]) | (d == 21'd0));
-    wire [19:0] v_st  = v + (({9'd0, a_max} ^ {20{~up}}) + {19'd0, ~up});   // |V -+ a| < 2^19
+    // the step +-a_max; the change of V is d (landing) or the step: no subtraction of V
+    wire [11:0] a_neg = 12'd0 - {1'b0, a_max};
+    wire [19:0] v_dlt = up ? {9'd0, a_max} : {{8{a_neg[11]}}, a_neg};
+    wire [19:0] v_st  = v + v_dlt;                                      // |V -+ a| < 2^19
     wire [19:0] v_rmp = land ? {t_hi, 8'd0} : v_st;
-    wire [11:0] a_rmp = v_rmp[11:0] - v[11:0];
+    wire [11:0] a_rmp = land ? d[11:0] : v_dlt[11:0];
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
-    wire [11:0] p_sum = {1'b0, acc} + {1'b0, zero_v ? 11'd0 : v_mag};
+    // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused)
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [12:0] p_t   = {1'b0, acc, 1'b1} + {1'b0, v_mx & {11{~zero_v}}, v_mc & ~zero_v};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [11:0] p_sum = p_t[12:1];
     wire        p_step = pulse_tick & p_sum[11];
-    reg  [7:0]  inc;                 // 2^(6-usrs), usrs 7 as 6
+    reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
     always @(*) begin
-        case (usrs)
-        3'd0: inc = 8'd64;  3'd1: inc = 8'd32;  3'd2: inc = 8'd16;  3'd3: inc = 8'd8;
-        3'd4: inc = 8'd4;   3'd5: inc = 8'd2;   default: inc = 8'd1;
+        case ({v_neg, usrs})
+        4'd0: inc = 8'd64;  4'd1: inc = 8'd32;  4'd2: inc = 8'd16;  4'd3: inc = 8'd8;
+        4'd4: inc = 8'd4;   4'd5: inc = 8'd2;   4'd6, 4'd7: inc = 8'd1;
+        4'd8: inc = 8'hC0;  4'd9: inc = 8'hE0;  4'd10: inc = 8'hF0; 4'd11: inc = 8'hF8;
+        4'd12: inc = 8'hFC; 4'd13: inc = 8'hFE; default: inc = 8'hFF;
         endcase
     end
     wire [23:0] x_stp = x_actual + {{23{v_neg}}, 1'b1};
-    wire [7:0]  u_stp = ustep + ((inc ^ {8{v_neg}}) + {7'd0, v_neg});
+    wire [7:0]  u_stp = ustep + inc;
 
     // ---- µC writes (C3, C23) ------------------------------------------------------------------
     wire        w_x   = we & (widx == 4'd1);
