@@ -104,22 +104,35 @@ module tmc429_ramp #(
     // ---- ramp tick (C51) -------------------------------------------------------------------------
     // d = T - V; up = V < T; lands on T when |d| <= a_max, else V +- a_max; a_actual = the
     // change of V. |d| <= a_max needs d in [-2047, 2047]: the top bits of d are all 0 or all 1.
-    wire [11:0] t_hi  = (stop & soft_sw) ? 12'd0 : vt;
-    wire [20:0] d     = {t_hi[11], t_hi, 8'd0} - {v[19], v};
-    wire        up    = ~d[20] & (d != 21'd0);
-    wire        d_lo0 = d[20:11] == 10'h000;
-    wire        d_lo1 = d[20:11] == 10'h3FF;
+    // For speed everything that depends only on registers is formed for both targets, T = 256 vt
+    // (d_t) and T = 0 (soft stop, d_z), and for both step directions (v_up, v_dn); the switch
+    // stop condition, the slowest input, only selects among them.
     /* verilator lint_off UNUSEDSIGNAL */     // only the carry / sign are used
-    wire [11:0] d_le  = {1'b0, a_max} - {1'b0, d[10:0]};                // d <= a: no borrow
-    wire [11:0] d_ge  = d[11:0] + {1'b0, a_max};                        // d >= -a: sign 0
+    wire [20:0] d_t   = {vt[11], vt, 8'd0} - {v[19], v};
+    wire [20:0] d_z   = 21'd0 - {v[19], v};
+    wire [11:0] le_t  = {1'b0, a_max} - {1'b0, d_t[10:0]};              // d <= a: no borrow
+    wire [11:0] ge_t  = d_t[11:0] + {1'b0, a_max};                      // d >= -a: sign 0
+    wire [11:0] le_z  = {1'b0, a_max} - {1'b0, d_z[10:0]};
+    wire [11:0] ge_z  = d_z[11:0] + {1'b0, a_max};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire        land  = up ? (d_lo0 & ~d_le[11]) : ((d_lo1 & ~d_ge[11]) | (d == 21'd0));
-    // the step +-a_max; the change of V is d (landing) or the step: no subtraction of V
+    wire        dz_t  = d_t == 21'd0;
+    wire        up_t  = ~d_t[20] & ~dz_t;
+    wire        land_t = up_t ? ((d_t[20:11] == 10'h000) & ~le_t[11])
+                              : (((d_t[20:11] == 10'h3FF) & ~ge_t[11]) | dz_t);
+    wire        up_z  = v_neg;                                          // d_z = -V > 0
+    wire        land_z = up_z ? ((d_z[20:11] == 10'h000) & ~le_z[11])
+                              : (((d_z[20:11] == 10'h3FF) & ~ge_z[11]) | v_zero);
+    wire        ss    = stop & soft_sw;                                 // soft stop: T = 0
+    wire [11:0] t_hi  = ss ? 12'd0 : vt;
+    wire        up    = ss ? up_z : up_t;
+    wire        land  = ss ? land_z : land_t;
+    wire [11:0] d_lo  = ss ? d_z[11:0] : d_t[11:0];
     wire [11:0] a_neg = 12'd0 - {1'b0, a_max};
-    wire [19:0] v_dlt = up ? {9'd0, a_max} : {{8{a_neg[11]}}, a_neg};
-    wire [19:0] v_st  = v + v_dlt;                                      // |V -+ a| < 2^19
-    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : v_st;
-    wire [11:0] a_rmp = land ? d[11:0] : v_dlt[11:0];
+    wire [19:0] v_up  = v + {9'd0, a_max};                              // |V -+ a| < 2^19
+    wire [19:0] v_dn  = v - {9'd0, a_max};
+    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
+    // the change of V: d when landing, else the step
+    wire [11:0] a_rmp = land ? d_lo : (up ? {1'b0, a_max} : a_neg);
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
