@@ -76,12 +76,14 @@ module tmc429_ramp #(
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
     wire        x_hi0 = x_actual[23:12] == 12'h000;
     wire        x_hi1 = x_actual[23:12] == 12'hFFF;
-    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096
-    /* verilator lint_off UNUSEDSIGNAL */     // only the borrow of the difference is used
+    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096,
+    // i.e. x_lo > k = 4096 - tol (k from the register alone: one carry chain after x_actual)
+    /* verilator lint_off UNUSEDSIGNAL */     // only the borrows of the differences are used
     wire [12:0] x_dif = {1'b0, x_actual[11:0]} - {1'b0, dx_ref_tolerance};
+    wire [12:0] x_k   = 13'd4096 - {1'b0, dx_ref_tolerance};
+    wire [13:0] x_kd  = {1'b0, x_k} - {2'b00, x_actual[11:0]};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [12:0] x_sum = {1'b0, x_actual[11:0]} + {1'b0, dx_ref_tolerance};
-    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_sum[12] & (x_sum[11:0] != 12'd0));
+    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_kd[13]);
 
     wire rnl      = ref_conf[3];
     wire soft_sw  = ref_conf[2];
@@ -136,11 +138,12 @@ module tmc429_ramp #(
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
-    // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused)
+    // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused); when V is zeroed
+    // this cycle the sum is acc (no carry), selected after the adder (zero_v is slow)
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [12:0] p_t   = {1'b0, acc, 1'b1} + {1'b0, v_mx & {11{~zero_v}}, v_mc & ~zero_v};
+    wire [12:0] p_t   = {1'b0, acc, 1'b1} + {1'b0, v_mx, v_mc};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [11:0] p_sum = p_t[12:1];
+    wire [11:0] p_sum = zero_v ? {1'b0, acc} : p_t[12:1];
     wire        p_step = pulse_tick & p_sum[11];
     reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
     always @(*) begin
