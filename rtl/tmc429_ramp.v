@@ -36,6 +36,7 @@ module tmc429_ramp #(
     input  wire [3:0]  ref_conf,   // REF_RnL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L
     input  wire [2:0]  usrs,
     input  wire [11:0] dx_ref_tolerance,
+    input  wire [12:0] tol_k,      // 4096 - dx_ref_tolerance (kept with the register)
     input  wire [11:0] vt,         // committed target velocity (tmc429_vtarget)
     input  wire        sw_l,       // left and right switch (C60)
     input  wire        sw_r,
@@ -77,11 +78,10 @@ module tmc429_ramp #(
     wire        x_hi0 = x_actual[23:12] == 12'h000;
     wire        x_hi1 = x_actual[23:12] == 12'hFFF;
     // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096,
-    // i.e. x_lo > k = 4096 - tol (k from the register alone: one carry chain after x_actual)
+    // i.e. x_lo > k = 4096 - tol (k = tol_k, a register: one carry chain after x_actual)
     /* verilator lint_off UNUSEDSIGNAL */     // only the borrows of the differences are used
     wire [12:0] x_dif = {1'b0, x_actual[11:0]} - {1'b0, dx_ref_tolerance};
-    wire [12:0] x_k   = 13'd4096 - {1'b0, dx_ref_tolerance};
-    wire [13:0] x_kd  = {1'b0, x_k} - {2'b00, x_actual[11:0]};
+    wire [13:0] x_kd  = {1'b0, tol_k} - {2'b00, x_actual[11:0]};
     /* verilator lint_on UNUSEDSIGNAL */
     assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_kd[13]);
 
