@@ -248,7 +248,7 @@ fn lut_csv_complete_tables() {
 #[test]
 fn ramp_csv_moves_end_on_target() {
     let dir = tmpdir("ramp");
-    export(&dir, &["--unit", "ramp", "--scenario", "ramp-p-examples"]);
+    export(&dir, &["--unit", "ramp", "--scenario", "ramp-p-examples", "--format", "csv"]);
     let rows = csv(&dir.join("ramp-ramp-p-examples-tmc429.csv"));
     for (m, target) in [(0, 60i64), (1, 400), (2, 150)] {
         let r: Vec<&Vec<String>> = rows.iter().filter(|r| r[1] == m.to_string()).collect();
@@ -296,7 +296,7 @@ fn bad_usage_exits_2_without_files() {
     for (args, msg) in [
         (vec!["--unit", "motor", "--scenario", "datasheet", "--out", d], "unknown unit"),
         (vec!["--unit", "spi", "--scenario", "nope", "--out", d], "neither a built-in scenario"),
-        (vec!["--unit", "ramp", "--scenario", "ramp-modes", "--format", "pins", "--out", d], "need its RTL module"),
+        (vec!["--unit", "chain", "--scenario", "chain-datasheet", "--format", "pins", "--out", d], "need the model to show its RTL ports"),
         (vec!["--unit", "chip", "--scenario", "datasheet", "--format", "csv", "--out", d], "pin-level vectors only"),
         (vec!["--unit", "lut", "--scenario", "datasheet", "--out", d], "use --scenario tables"),
         (vec!["--unit", "spi", "--scenario", s, "--out", d], "bad.txt:2: expected a decimal cycle count"),
@@ -340,7 +340,7 @@ fn example(name: &str) -> String {
 fn toml_scenario_vectors() {
     let dir = tmpdir("toml");
     let f = example("ramp-move.toml");
-    let printed = export(&dir, &["--unit", "ramp", "--scenario", &f]);
+    let printed = export(&dir, &["--unit", "ramp", "--scenario", &f, "--format", "csv"]);
     assert_eq!(printed, format!("{}\n", dir.join("ramp-ramp-move-tmc429.csv").display()));
     let rows = csv(&dir.join("ramp-ramp-move-tmc429.csv"));
     let m0: Vec<&Vec<String>> = rows.iter().filter(|r| r[1] == "0").collect();
@@ -376,7 +376,7 @@ fn toml_scenario_vectors() {
 
     export(&dir, &["--unit", "chip", "--scenario", &f]);
     let stem = dir.join("chip-ramp-move-tmc429");
-    for (k, v) in [("cycles", "1920001"), ("fclk", "32000000"), ("scenario", "ramp-move"), ("chip", "tmc429"), ("replay", "pending-motion-core")] {
+    for (k, v) in [("cycles", "1920001"), ("fclk", "32000000"), ("scenario", "ramp-move"), ("chip", "tmc429"), ("replay", "ready"), ("mask", "7FF"), ("not_compared", "-")] {
         assert_eq!(meta(&stem, k), v, "{k}");
     }
     assert_eq!(std::fs::read_to_string(stem.with_extension("hex")).unwrap().lines().count(), 1_920_001);
@@ -488,5 +488,136 @@ fn run_writes_the_vectors_of_a_scenario() {
     assert_eq!(o.status.code(), Some(2));
     assert!(o.stdout.is_empty());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--vectors /proc/nonexistent/v: cannot create"));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Pin-level lut vectors (tmc429_microstep): Table 12-4 / 12-2 / 8-1 values at the unit's ports,
+/// a clean replay, and a flipped expected bit in a copy that the replay reports at its line and
+/// column (not as a corrupt file: the check digit is flipped with it).
+#[test]
+fn lut_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("lutpins");
+    export(&dir, &["--unit", "lut", "--scenario", "tables", "--format", "pins"]);
+    let stem = dir.join("lut-tables-tmc429");
+    assert_eq!(meta(&stem, "cycles"), (2 * 2 * 2 * 8 * (4 + 8 + 16 + 32 + 64 + 128 + 256 + 256)).to_string());
+    assert_eq!(meta(&stem, "width"), "56");
+    let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = hex.lines().collect();
+    // word: A | w 8 | coil_b 1 | lut 6 | i_scale 3 | code 5 | dac_q 6 | neg, step, pol 5 | lut_idx 6 | dac 6 | bit_out 1 | _check 5
+    let field = |l: &str, lo: u32, w: u32| (u64::from_str_radix(l, 16).unwrap() >> lo) & ((1 << w) - 1);
+    let ports = |l: &str| (field(l, 44, 8), field(l, 43, 1), field(l, 37, 6), field(l, 12, 6), field(l, 6, 6));
+    // sine, usrs 0, +, i_scale 0, row 1 (w = 64, Table 12-4): coil A reads sin index 63 = 63, coil B cos index 0 = 0
+    assert_eq!(ports(lines[2]), (64, 0, 63, 63, 63));
+    assert_eq!(ports(lines[3]), (64, 1, 0, 0, 0));
+    // i_scale %100 (Table 8-1): rows 4·4 + 1 → (63 · 4) >> 3 = 31
+    assert_eq!(ports(lines[2 * (4 * 4 + 1)]), (64, 0, 63, 63, 31));
+
+    let vvp = dir.join("tb_lut.vvp");
+    let o = Command::new("iverilog")
+        .args(["-g2005", "-P", "tb_lut.CHIP=1", "-I"])
+        .arg(root().join("vectors/tb"))
+        .arg("-o")
+        .arg(&vvp)
+        .arg(root().join("vectors/tb/tb_lut.v"))
+        .arg(root().join("rtl/tmc429_microstep.v"))
+        .output()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = replay(&vvp, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{} passed, 0 failed", lines.len()), "{out:?}");
+
+    // flip bit_out (bit 1 of digit 12) of line 1000 and the same bit of the check digit
+    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let b = bad[1000].as_bytes().to_vec();
+    let expected = (field(lines[1000], 5, 1), field(lines[1000], 5, 1) ^ 1);
+    let mut s: String = b[..12].iter().map(|c| *c as char).collect();
+    s.push(flip(b[12], 2));
+    s.push(flip(b[13], 2));
+    bad[1000] = s;
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let out = replay(&vvp, &stem, Some(&planted));
+    assert_eq!(
+        out[..2],
+        [
+            format!("MISMATCH cycle 1000 column bit_out: expected {} got {}", expected.1, expected.0),
+            format!("{} passed, 1 failed", lines.len() - 1)
+        ],
+        "{out:?}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Pin-level ramp vectors (tmc429_ramp) of the reference search: the motors one after the
+/// other, each from its reset line; motor 0's switch stop (C61), its zeroing by a µC write
+/// (C3) and its RAMP_MODE move ending on x_target = 40 with V = 0 (C52); a clean replay, and a
+/// flipped expected `stop` bit in a copy that the replay reports at its line and column.
+#[test]
+fn ramp_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("ramppins");
+    export(&dir, &["--unit", "ramp", "--scenario", "reference-search", "--format", "pins"]);
+    let stem = dir.join("ramp-reference-search-tmc429");
+    assert_eq!(meta(&stem, "width"), "252");
+    let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = hex.lines().collect();
+    let cycles: usize = meta(&stem, "cycles").parse().unwrap();
+    assert_eq!((lines.len(), cycles % 3), (cycles, 0));
+    let per = cycles / 3;
+    // word bits: A 251..248 | inputs 247..134 (rst 247, we 162, widx 161..158, wdata 157..134)
+    // | outputs 133..5 (x_actual 133..110, v 109..90, xeqt 19, stop 18) | _check 4..0
+    let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
+    let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
+    for m in 0..3 {
+        assert_eq!(field(lines[m * per], 247, 1), 1, "motor {m} begins with its reset line");
+        assert_eq!(field(lines[m * per + 1], 247, 1), 0);
+    }
+    let m0 = &lines[..per];
+    // the switch stop holds while REF1 is high and motor 0 moves left; V is then 0
+    let s = m0.iter().position(|l| field(l, 18, 1) == 1).expect("a switch stop");
+    assert_eq!(field(m0[s + 1], 90, 20), 0);
+    // the µC write x_actual := 0 (IDX 1) is executed in its edge
+    let z = m0.iter().position(|l| field(l, 162, 1) == 1 && field(l, 158, 4) == 1).expect("x_actual write");
+    assert!(z > s);
+    assert_eq!((field(m0[z], 134, 24), field(m0[z], 110, 24)), (0, 0));
+    // the move ends on x_target = 40 with V = 0
+    let last = m0[per - 1];
+    assert_eq!((field(last, 110, 24), field(last, 90, 20), field(last, 19, 1)), (40, 0, 1));
+    // motor 1 holds at 0 all along
+    assert!(lines[per..2 * per].iter().all(|l| field(l, 110, 24) == 0 && field(l, 90, 20) == 0));
+
+    let vvp = dir.join("tb_ramp.vvp");
+    let o = Command::new("iverilog")
+        .args(["-g2005", "-P", "tb_ramp.CHIP=1", "-I"])
+        .arg(root().join("vectors/tb"))
+        .arg("-o")
+        .arg(&vvp)
+        .arg(root().join("vectors/tb/tb_ramp.v"))
+        .arg(root().join("rtl/tmc429_ramp.v"))
+        .output()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = replay(&vvp, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
+
+    // flip `stop` (word bit 18: bit 2 of digit 58) of the line s + 1 of motor 1's lines, and the
+    // same bit of the check digit (62)
+    let k = per + s + 1;
+    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let b: Vec<char> = bad[k].chars().collect();
+    let mut c = b.clone();
+    c[58] = flip(b[58] as u8, 4);
+    c[62] = flip(b[62] as u8, 4);
+    bad[k] = c.into_iter().collect();
+    let was = field(lines[k], 18, 1);
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let out = replay(&vvp, &stem, Some(&planted));
+    assert_eq!(
+        out[..2],
+        [format!("MISMATCH cycle {k} column stop: expected {} got {was}", was ^ 1), format!("{} passed, 1 failed", cycles - 1)],
+        "{out:?}"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }

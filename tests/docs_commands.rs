@@ -10,9 +10,6 @@
 use std::path::Path;
 use std::process::Command;
 
-#[path = "support/demo_cosim.rs"]
-mod demo_cosim;
-
 const SKIP: [&str; 7] = ["./scripts/test", "gtkwave ", "make ", "cargo build", "cargo test", "cargo bench", "tmcl serve"];
 
 /// The ```sh blocks of a Markdown file, with the line each starts on.
@@ -46,10 +43,6 @@ fn script(block: &str, bin: &str) -> String {
         l = l.replace("cargo run --release --", B).replace("target/release/tmc429", B);
         if let Some(rest) = l.strip_prefix("tmc429 ") {
             l = format!("{B} {rest}");
-        }
-        // the co-simulated demo needs the RTL's motion core: the model until it lands
-        if !demo_cosim::DEMO_COSIM_READY && l.starts_with(&format!("{B} demo")) && !l.contains("--engine") {
-            l.push_str(" --engine model");
         }
         s.push_str(&l.replace(B, bin));
         s.push('\n');

@@ -289,6 +289,42 @@ impl Tmc429 {
         p
     }
 
+    /// The inputs motor `m`'s ramp and pulse generator sees before the next edge: the levels of
+    /// the current state ([`motor::RampInputs`]). With [`motor::ramp_ports`] of the state after
+    /// that edge this is the boundary of `rtl/tmc429_ramp.v` (test vectors, docs/vectors.md).
+    pub fn ramp_inputs(&self, m: usize) -> motor::RampInputs {
+        let mo = &self.motors[m];
+        let phase = self.prescaler & 31;
+        let frame = self.prescaler >> 5;
+        let due = |div: u8| frame & ((1 << div) - 1) == (1 << div) - 1;
+        let (left, right) = self.switches();
+        let p = self.spi.ports(&self.sync);
+        let a7 = ((p.cmd >> 25) & 0x7F) as u8;
+        let write = p.exec && (p.cmd >> 24) & 1 == 0;
+        let (we, widx) = match (regmap::lookup(self.chip, a7), Addr::from_a7(a7)) {
+            (Some(_), Addr::Motor(mm, idx)) if write && mm as usize == m => (true, idx),
+            _ => (false, 0),
+        };
+        motor::RampInputs {
+            run: !self.power_down,
+            ramp_tick: phase == PHASE_RAMP && due(mo.ramp_div),
+            pulse_tick: phase == PHASE_PULSE && due(mo.pulse_div),
+            rm: mo.rm,
+            x_target: mo.x_target,
+            v_min: mo.v_min,
+            a_max: mo.a_max,
+            ref_conf: mo.ref_conf,
+            usrs: mo.usrs,
+            dx_ref_tolerance: mo.dx_ref_tolerance,
+            vt: mo.vt,
+            sw_l: (left >> m) & 1 != 0,
+            sw_r: (right >> m) & 1 != 0,
+            we,
+            widx: if we { widx } else { 0 },
+            wdata: if we { p.cmd & 0xFF_FFFF } else { 0 },
+        }
+    }
+
     /// One rising edge of CLK (C1).
     #[inline]
     pub fn tick(&mut self, inp: &Inputs) -> Outputs {
@@ -450,16 +486,10 @@ impl Tmc429 {
             }
             let l = (left >> i) & 1 != 0;
             let r = (right >> i) & 1 != 0;
-            let x = sext24(m.x_actual);
-            let tol_ok = x.unsigned_abs() < m.dx_ref_tolerance as u32;
             let rnl = m.ref_conf & REF_RNL != 0;
             let sel = if rnl { r } else { l };
-            let moving_neg = m.v < 0 || (m.v == 0 && vt < 0);
-            let moving_pos = m.v > 0 || (m.v == 0 && vt > 0);
             // The tolerance window masks only the REF_RnL-selected switch.
-            let stop_l = m.ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && (rnl || !tol_ok);
-            let stop_r = m.ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && (!rnl || !tol_ok);
-            let stop = stop_l || stop_r;
+            let (tol_ok, stop) = motor::switch_stop(m.x_actual, m.v, vt, m.ref_conf, m.dx_ref_tolerance, l, r);
             let soft = m.ref_conf & SOFT_STOP != 0;
             let hard_stop = stop && !soft;
             let at_target = m.x_actual == m.x_target;

@@ -76,9 +76,17 @@ pub fn lut_cell(w: u8, code: u8) -> usize {
 /// where `lut` is the LUT cell [`lut_cell`]`(w, code)`: equal to bit `code` of [`signals`].
 #[inline]
 pub fn signal_bit(code: u8, w: u8, lut: u8, i_scale: u8, negative: bool, step: bool, pol: Polarity) -> bool {
+    signal_bit_scaled(code, w, scale(lut, i_scale), negative, step, pol)
+}
+
+/// Bit `code` of the primary signal vector from the already scaled DAC value `dac`
+/// ([`scale`] of the LUT cell the code reads): the form the driver chain evaluates, with the
+/// scaled value registered between the two (contract C80).
+#[inline]
+pub fn signal_bit_scaled(code: u8, w: u8, dac: u8, negative: bool, step: bool, pol: Polarity) -> bool {
     let (ph_a, ph_b, fd_a, fd_b) = quadrant_bits(w);
     match code & 0x1F {
-        c @ (0..=5 | 8..=13) => ((scale(lut, i_scale) >> (c & 7)) & 1 != 0) ^ pol.dac_ab,
+        c @ (0..=5 | 8..=13) => ((dac >> (c & 7)) & 1 != 0) ^ pol.dac_ab,
         PH_A => ph_a ^ pol.ph_ab,
         FD_A => fd_a ^ pol.fd_ab,
         PH_B => ph_b ^ pol.ph_ab,
@@ -88,6 +96,48 @@ pub fn signal_bit(code: u8, w: u8, lut: u8, i_scale: u8, negative: bool, step: b
         DIRECTION => negative,
         STEP => step,
         _ => true,
+    }
+}
+
+/// The inputs of the microstep unit at its RTL boundary (`tmc429_microstep`, rtl/README.md
+/// "Unit ports"): three combinational functions the driver chain uses one after the other.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct UnitInputs {
+    /// Full-wave index (the snapshot's microstep count).
+    pub w: u8,
+    /// Coil of the LUT value needed: false A (sine), true B (cosine) = bit 3 of the code.
+    pub coil_b: bool,
+    /// The LUT value read (RAM cell 64 + `lut_idx`).
+    pub lut: u8,
+    /// Current scale (Table 8-1, C76).
+    pub i_scale: u8,
+    /// Primary signal code of the bit (Table 11-1).
+    pub code: u8,
+    /// Scaled LUT value for `code` (registered by the chain, C80).
+    pub dac_q: u8,
+    pub negative: bool,
+    pub step: bool,
+    pub pol: Polarity,
+}
+
+/// The outputs of the microstep unit at its RTL boundary.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct UnitOutputs {
+    /// LUT index for (`w`, `coil_b`) (C71): the cell 64 + `lut_idx` is read.
+    pub lut_idx: u8,
+    /// `lut` scaled by `i_scale` (C76).
+    pub dac: u8,
+    /// Bit `code` of the signal vector formed from `dac_q` (C72–C74).
+    pub bit_out: bool,
+}
+
+/// The microstep unit at its RTL boundary: [`lut_cell`], [`scale`] and [`signal_bit_scaled`]
+/// side by side, as `tmc429_microstep` computes them.
+pub fn unit_ports(i: &UnitInputs) -> UnitOutputs {
+    UnitOutputs {
+        lut_idx: (lut_cell(i.w, (i.coil_b as u8) << 3) - LUT_BASE) as u8,
+        dac: scale(i.lut, i.i_scale),
+        bit_out: signal_bit_scaled(i.code, i.w, i.dac_q & 63, i.negative, i.step, i.pol),
     }
 }
 
@@ -167,6 +217,21 @@ mod tests {
         // Table 12-4: index 64 reads sin 63 (coil A), cos 0 (coil B).
         assert_eq!(lut_cell(64, 0x05), LUT_BASE + 63);
         assert_eq!(lut_cell(64, 0x0D), LUT_BASE);
+    }
+
+    #[test]
+    fn unit_ports_table_12_4_and_8_1() {
+        // Table 12-4: index 64 reads sin 63 (coil A), cos 0 (coil B); Table 8-1: 59 * 4 >> 3 = 29.
+        let i = UnitInputs { w: 64, lut: 59, i_scale: 4, code: PH_A, ..Default::default() };
+        assert_eq!(unit_ports(&i), UnitOutputs { lut_idx: 63, dac: 29, bit_out: true });
+        let i = UnitInputs { w: 64, coil_b: true, code: 0x0D, dac_q: 0b10_0000, ..Default::default() };
+        assert_eq!(unit_ports(&i), UnitOutputs { lut_idx: 0, dac: 0, bit_out: true });
+        let i = UnitInputs { code: 0x0D, dac_q: 0b01_1111, pol: Polarity { dac_ab: true, ..Default::default() }, ..i };
+        assert!(unit_ports(&i).bit_out);
+        // Zero, Direction, unused $14 (C74)
+        assert!(!unit_ports(&UnitInputs { code: ZERO, ..i }).bit_out);
+        assert!(unit_ports(&UnitInputs { code: DIRECTION, negative: true, ..i }).bit_out);
+        assert!(unit_ports(&UnitInputs { code: 0x14, ..i }).bit_out);
     }
 
     #[test]

@@ -236,3 +236,97 @@ impl Motor {
         self.dir = negative;
     }
 }
+
+/// The switch-stop condition (C61) and the tolerance window: `(tol_ok, stop)` for the left and
+/// right switch levels `l`, `r`, position `x_actual`, internal velocity `v`, committed target
+/// velocity `vt`, `ref_conf` and `dx_ref_tolerance`. stop_L = ¬DISABLE_STOP_L ∧ L ∧ moving
+/// negative ∧ (REF_RnL ∨ ¬tol_ok), stop_R symmetric; the tolerance window masks only the
+/// REF_RnL-selected switch; tol_ok = |x_actual| < dx_ref_tolerance.
+#[inline]
+pub fn switch_stop(x_actual: u32, v: i32, vt: i32, ref_conf: u8, dx_ref_tolerance: u16, l: bool, r: bool) -> (bool, bool) {
+    let tol_ok = sext24(x_actual).unsigned_abs() < dx_ref_tolerance as u32;
+    let rnl = ref_conf & REF_RNL != 0;
+    let moving_neg = v < 0 || (v == 0 && vt < 0);
+    let moving_pos = v > 0 || (v == 0 && vt > 0);
+    let stop_l = ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && (rnl || !tol_ok);
+    let stop_r = ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && (!rnl || !tol_ok);
+    (tol_ok, stop_l || stop_r)
+}
+
+/// The inputs of one motor's ramp and pulse generator at its RTL boundary (`tmc429_ramp`,
+/// rtl/README.md "The ramp unit"): levels of the old state, presented before a CLK edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RampInputs {
+    /// The motion core runs (not powered down, C66).
+    pub run: bool,
+    /// Phase 30 of a frame F with F mod 2^ramp_div = 2^ramp_div − 1 (C40, C41); any ramp mode.
+    pub ramp_tick: bool,
+    /// Phase 31 of a frame F with F mod 2^pulse_div = 2^pulse_div − 1 (C53).
+    pub pulse_tick: bool,
+    pub rm: u8,
+    pub x_target: u32,
+    pub v_min: u16,
+    pub a_max: u16,
+    /// [`DISABLE_STOP_L`], [`DISABLE_STOP_R`], [`SOFT_STOP`], [`REF_RNL`].
+    pub ref_conf: u8,
+    pub usrs: u8,
+    pub dx_ref_tolerance: u16,
+    /// Committed target velocity (C41), integer units.
+    pub vt: i32,
+    /// Left and right switch after mapping (C60).
+    pub sw_l: bool,
+    pub sw_r: bool,
+    /// A µC write to this motor's register `widx` executes in this edge (C12).
+    pub we: bool,
+    pub widx: u8,
+    pub wdata: u32,
+}
+
+/// The outputs of the ramp unit: its registers after an edge, and the conditions of those
+/// registers with the edge's inputs `RampInputs` (what the RTL's combinational outputs show
+/// while that line's inputs are applied).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RampPorts {
+    pub x_actual: u32,
+    /// Internal velocity V, 20-bit two's complement (1/256 units).
+    pub v: u32,
+    pub v_target: u16,
+    /// a_actual, 12-bit two's complement (C25).
+    pub a_actual: u16,
+    pub ustep: u8,
+    pub acc: u16,
+    pub step: bool,
+    pub dir: bool,
+    pub x_latched: u32,
+    pub lp: bool,
+    /// x_actual = x_target.
+    pub xeqt: bool,
+    /// Switch-stop condition ([`switch_stop`], C61, C63).
+    pub stop: bool,
+    /// |x_actual| < dx_ref_tolerance.
+    pub tol_ok: bool,
+    /// v_actual readout sign(V)·(|V| >> 8), 12-bit two's complement (C42).
+    pub v_actual: u16,
+}
+
+/// The ramp unit's outputs for the motor state `m` (after an edge) and the inputs `i` of that
+/// edge ([`RampPorts`]).
+pub fn ramp_ports(m: &Motor, i: &RampInputs) -> RampPorts {
+    let (tol_ok, stop) = switch_stop(m.x_actual, m.v, i.vt, i.ref_conf, i.dx_ref_tolerance, i.sw_l, i.sw_r);
+    RampPorts {
+        x_actual: m.x_actual & MASK24,
+        v: (m.v as u32) & 0xF_FFFF,
+        v_target: m.v_target & 0xFFF,
+        a_actual: (m.a_actual as u32 & 0xFFF) as u16,
+        ustep: m.ustep,
+        acc: m.acc & 0x7FF,
+        step: m.step,
+        dir: m.dir,
+        x_latched: m.x_latched & MASK24,
+        lp: m.lp,
+        xeqt: m.x_actual == i.x_target,
+        stop,
+        tol_ok,
+        v_actual: (m.v_actual() as u32 & 0xFFF) as u16,
+    }
+}

@@ -11,23 +11,16 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
-use vcd::{IdCode, TimescaleUnit, Value, VarType, Writer};
+use vcd::{IdCode, TimescaleUnit, VarType, Writer};
 
 use tmc429_model::{Inputs, Outputs, Probes};
 use tmc429_testbench::signals::{flatten, N_SIGNALS, SIGNALS};
 
-/// The input pins in the VCD's `top` scope.
-pub const INPUT_NAMES: [&str; 10] =
-    ["nscs_c", "sck_c", "sdi_c", "sdi_s", "ref1", "ref2", "ref3", "refr1", "refr2", "refr3"];
+pub use tmc429_testbench::trace::INPUT_NAMES;
+use tmc429_testbench::trace::{add_signals, input_bits, put};
 
 /// Signals of [`SIGNALS`] not written (they change every cycle).
 pub const SKIPPED: [&str; 1] = ["prescaler"];
-
-fn input_bits(i: &Inputs) -> [bool; 10] {
-    [i.nscs_c, i.sck_c, i.sdi_c, i.sdi_s, i.ref1, i.ref2, i.ref3, i.refr1, i.refr2, i.refr3]
-}
-
-const SCOPES: [&str; 5] = ["top", "motor0", "motor1", "motor2", "chain"];
 
 /// Full names (`scope.name`) of every variable the writer declares, for a run with or without
 /// the RTL side.
@@ -63,26 +56,6 @@ pub struct VcdWriter {
     last_mismatch: bool,
 }
 
-fn add_signals(
-    w: &mut Writer<BufWriter<File>>,
-    mut extra: impl FnMut(&mut Writer<BufWriter<File>>) -> io::Result<()>,
-) -> io::Result<[Option<IdCode>; N_SIGNALS]> {
-    let mut ids = [None; N_SIGNALS];
-    for scope in SCOPES {
-        w.add_module(scope)?;
-        if scope == "top" {
-            extra(w)?;
-        }
-        for (k, s) in SIGNALS.iter().enumerate() {
-            if s.scope == scope && !SKIPPED.contains(&s.name) {
-                ids[k] = Some(w.add_wire(s.width, s.name)?);
-            }
-        }
-        w.upscope()?;
-    }
-    Ok(ids)
-}
-
 impl VcdWriter {
     /// Creates the file and writes the header; `cosim` adds the RTL side and the mismatch flag.
     pub fn create(path: &Path, fclk_hz: u64, title: &str, cosim: bool) -> io::Result<VcdWriter> {
@@ -91,7 +64,7 @@ impl VcdWriter {
         w.comment(title)?;
         w.timescale(1, TimescaleUnit::PS)?;
         let mut inputs = [IdCode::FIRST; 10];
-        let a = add_signals(&mut w, |w| {
+        let a = add_signals(&mut w, &SKIPPED, |w| {
             for (k, n) in INPUT_NAMES.iter().enumerate() {
                 inputs[k] = w.add_wire(1, n)?;
             }
@@ -102,7 +75,7 @@ impl VcdWriter {
         w.upscope()?;
         let (b, mismatch) = if cosim {
             w.add_module("rtl")?;
-            let b = add_signals(&mut w, |_| Ok(()))?;
+            let b = add_signals(&mut w, &SKIPPED, |_| Ok(()))?;
             w.upscope()?;
             w.add_module("cosim")?;
             let m = w.add_wire(1, "mismatch")?;
@@ -127,14 +100,6 @@ impl VcdWriter {
         })
     }
 
-    fn put(w: &mut Writer<BufWriter<File>>, id: IdCode, width: u32, v: u64) -> io::Result<()> {
-        if width == 1 {
-            w.change_scalar(id, if v & 1 == 1 { Value::V1 } else { Value::V0 })
-        } else {
-            w.change_vector(id, (0..width).rev().map(|b| if v >> b & 1 == 1 { Value::V1 } else { Value::V0 }))
-        }
-    }
-
     /// Records edge `n` (0-based): its inputs and the state after it; `b` is the RTL's side.
     #[allow(clippy::too_many_arguments)]
     pub fn tick(
@@ -152,7 +117,7 @@ impl VcdWriter {
             self.w.timestamp(n * self.period + self.period / 2)?;
             for k in 0..10 {
                 if self.last_in.is_none_or(|l| l[k] != bits[k]) {
-                    Self::put(&mut self.w, self.inputs[k], 1, bits[k] as u64)?;
+                    put(&mut self.w, self.inputs[k], 1, bits[k] as u64)?;
                 }
             }
             self.last_in = Some(bits);
@@ -177,13 +142,13 @@ impl VcdWriter {
             let wdt = SIGNALS[k].width;
             if let Some(id) = self.a[k] {
                 if self.last_a.is_none_or(|l| l[k] != fa[k]) {
-                    Self::put(&mut self.w, id, wdt, fa[k])?;
+                    put(&mut self.w, id, wdt, fa[k])?;
                 }
             }
             if let (Some(ids), Some(fb)) = (&self.b, &fb) {
                 if let Some(id) = ids[k] {
                     if self.last_b.is_none_or(|l| l[k] != fb[k]) {
-                        Self::put(&mut self.w, id, wdt, fb[k])?;
+                        put(&mut self.w, id, wdt, fb[k])?;
                     }
                 }
             }
@@ -192,7 +157,7 @@ impl VcdWriter {
         self.last_b = fb;
         if let Some(id) = self.mismatch {
             if mismatch != self.last_mismatch || n == 0 {
-                Self::put(&mut self.w, id, 1, mismatch as u64)?;
+                put(&mut self.w, id, 1, mismatch as u64)?;
             }
             self.last_mismatch = mismatch;
         }

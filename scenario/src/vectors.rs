@@ -27,7 +27,6 @@ pub fn vector_scenario(sc: &Scenario, pins: PinRuns) -> vectors::Scenario {
             "scenario file {} (docs/scenarios.md): {} CLK cycles, input pins recorded from its run on the golden model",
             sc.file, sc.duration
         )],
-        hold_only: false,
     }
 }
 

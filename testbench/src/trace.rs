@@ -14,10 +14,12 @@ use tmc429_model::{Inputs, Outputs, Probes};
 
 use crate::signals::{flatten, N_SIGNALS, SIGNALS};
 
-const INPUT_NAMES: [&str; 10] =
+/// The input pins in the VCD's `top` scope.
+pub const INPUT_NAMES: [&str; 10] =
     ["nscs_c", "sck_c", "sdi_c", "sdi_s", "ref1", "ref2", "ref3", "refr1", "refr2", "refr3"];
 
-fn input_bits(i: &Inputs) -> [bool; 10] {
+/// The input pins in the order of [`INPUT_NAMES`].
+pub fn input_bits(i: &Inputs) -> [bool; 10] {
     [i.nscs_c, i.sck_c, i.sdi_c, i.sdi_s, i.ref1, i.ref2, i.ref3, i.refr1, i.refr2, i.refr3]
 }
 
@@ -36,27 +38,44 @@ pub struct TraceWriter {
     last_rtl: Option<[u64; N_SIGNALS]>,
 }
 
-const SCOPES: [&str; 5] = ["top", "motor0", "motor1", "motor2", "chain"];
+/// The VCD scopes of the compared signals (ARCHITECTURE.md, "Files").
+pub const SCOPES: [&str; 5] = ["top", "motor0", "motor1", "motor2", "chain"];
 
-/// Adds the scopes and wires of all compared signals; in scope `top` first `extra` wires.
-fn add_signals(
+/// Adds the scopes and wires of the compared signals except those named in `skip`; in scope
+/// `top` first the wires `extra` adds.
+pub fn add_signals(
     w: &mut Writer<BufWriter<File>>,
+    skip: &[&str],
     mut extra: impl FnMut(&mut Writer<BufWriter<File>>) -> io::Result<()>,
-) -> io::Result<[IdCode; N_SIGNALS]> {
-    let mut ids = [IdCode::FIRST; N_SIGNALS];
+) -> io::Result<[Option<IdCode>; N_SIGNALS]> {
+    let mut ids = [None; N_SIGNALS];
     for scope in SCOPES {
         w.add_module(scope)?;
         if scope == "top" {
             extra(w)?;
         }
         for (k, s) in SIGNALS.iter().enumerate() {
-            if s.scope == scope {
-                ids[k] = w.add_wire(s.width, s.name)?;
+            if s.scope == scope && !skip.contains(&s.name) {
+                ids[k] = Some(w.add_wire(s.width, s.name)?);
             }
         }
         w.upscope()?;
     }
     Ok(ids)
+}
+
+/// Writes the value `v` of a `width`-bit variable.
+pub fn put(w: &mut Writer<BufWriter<File>>, id: IdCode, width: u32, v: u64) -> io::Result<()> {
+    if width == 1 {
+        w.change_scalar(id, if v & 1 == 1 { Value::V1 } else { Value::V0 })
+    } else {
+        w.change_vector(id, (0..width).rev().map(|b| if v >> b & 1 == 1 { Value::V1 } else { Value::V0 }))
+    }
+}
+
+/// Every compared signal has a wire (nothing skipped).
+fn all(ids: [Option<IdCode>; N_SIGNALS]) -> [IdCode; N_SIGNALS] {
+    ids.map(|id| id.unwrap_or(IdCode::FIRST))
 }
 
 impl TraceWriter {
@@ -69,18 +88,19 @@ impl TraceWriter {
         // the model: scope `top` holds CLK, the inputs, the output pins and global probes
         let mut clk = IdCode::FIRST;
         let mut inputs = [IdCode::FIRST; 10];
-        let model = add_signals(&mut w, |w| {
+        let model = add_signals(&mut w, &[], |w| {
             clk = w.add_wire(1, "clk")?;
             for (k, n) in INPUT_NAMES.iter().enumerate() {
                 inputs[k] = w.add_wire(1, n)?;
             }
             Ok(())
-        })?;
+        })
+        .map(all)?;
         w.add_module("spi")?;
         let txn = w.add_var(VarType::String, 1, "transaction", None)?;
         w.upscope()?;
         w.add_module("rtl")?;
-        let rtl = add_signals(&mut w, |_| Ok(()))?;
+        let rtl = all(add_signals(&mut w, &[], |_| Ok(()))?);
         w.upscope()?;
         w.add_module("cosim")?;
         let mismatch = w.add_wire(1, "mismatch")?;
@@ -99,17 +119,6 @@ impl TraceWriter {
             last_model: None,
             last_rtl: None,
         })
-    }
-
-    fn put(w: &mut Writer<BufWriter<File>>, id: IdCode, width: u32, v: u64) -> io::Result<()> {
-        if width == 1 {
-            w.change_scalar(id, if v & 1 == 1 { Value::V1 } else { Value::V0 })
-        } else {
-            w.change_vector(
-                id,
-                (0..width).rev().map(|b| if v >> b & 1 == 1 { Value::V1 } else { Value::V0 }),
-            )
-        }
     }
 
     /// Records tick `n` (0-based): its inputs, the states of both sides after it, and
@@ -132,7 +141,7 @@ impl TraceWriter {
         let bits = input_bits(inp);
         for k in 0..10 {
             if self.last_in.is_none_or(|l| l[k] != bits[k]) {
-                Self::put(&mut self.w, self.inputs[k], 1, bits[k] as u64)?;
+                put(&mut self.w, self.inputs[k], 1, bits[k] as u64)?;
             }
         }
         self.last_in = Some(bits);
@@ -143,15 +152,15 @@ impl TraceWriter {
         for k in 0..N_SIGNALS {
             let wdt = SIGNALS[k].width;
             if self.last_model.is_none_or(|l| l[k] != fm[k]) {
-                Self::put(&mut self.w, self.model[k], wdt, fm[k])?;
+                put(&mut self.w, self.model[k], wdt, fm[k])?;
             }
             if self.last_rtl.is_none_or(|l| l[k] != fr[k]) {
-                Self::put(&mut self.w, self.rtl[k], wdt, fr[k])?;
+                put(&mut self.w, self.rtl[k], wdt, fr[k])?;
             }
         }
         self.last_model = Some(fm);
         self.last_rtl = Some(fr);
-        Self::put(&mut self.w, self.mismatch, 1, mismatch as u64)?;
+        put(&mut self.w, self.mismatch, 1, mismatch as u64)?;
         if let Some(t) = txn {
             let s: String = t.chars().map(|c| if c.is_whitespace() { '_' } else { c }).collect();
             self.w.change_string(self.txn, &s)?;

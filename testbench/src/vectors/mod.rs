@@ -46,13 +46,13 @@ impl Unit {
         }
     }
 
-    /// The forms this unit has today. Pin-level vectors of a unit need its RTL module and the
-    /// same boundary in the model: the ramp/pulse generator, the microstep LUT unit and the
-    /// driver-chain master are not in rtl/ yet (rtl/README.md).
+    /// The forms this unit has today. Pin-level vectors of a unit need the same boundary in the
+    /// model as its RTL module: the SPI slave, the ramp/pulse generator and the microstep LUT
+    /// unit have it; the driver-chain master not yet.
     pub fn has(self, f: Form) -> bool {
         matches!(
             (self, f),
-            (Unit::Spi, _) | (Unit::Chip, Form::Pins) | (Unit::Ramp | Unit::Lut | Unit::Chain, Form::Csv)
+            (Unit::Spi | Unit::Ramp | Unit::Lut, _) | (Unit::Chip, Form::Pins) | (Unit::Chain, Form::Csv)
         )
     }
 }
@@ -113,8 +113,8 @@ pub fn forms(unit: Unit, format: Format) -> Result<Vec<Form>, String> {
         return Err(match (unit, format) {
             (Unit::Chip, _) => "unit chip has pin-level vectors only: use --format pins".to_string(),
             (_, Format::Pins) => format!(
-                "pin-level vectors of the {unit} unit need its RTL module, which is not in rtl/ yet \
-                 (rtl/README.md); --format csv gives its transaction-level vectors"
+                "pin-level vectors of the {unit} unit need the model to show its RTL ports, which it \
+                 does not yet (docs/vectors.md); --format csv gives its transaction-level vectors"
             ),
             _ => format!("unit {unit} has no {format:?} vectors"),
         });
@@ -137,8 +137,19 @@ pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<V
                 sc.name
             ));
         }
-        let f = lut::write(&stem(dir, unit, sc).with_extension("csv"))?;
-        return files::commit_all(vec![f]);
+        let st = stem(dir, unit, sc);
+        let mut all = Vec::new();
+        for f in forms {
+            match f {
+                Form::Csv => all.push(lut::write(&st.with_extension("csv"))?),
+                Form::Pins => {
+                    let mut m = meta(unit, sc);
+                    m.notes.clear();
+                    all.extend(lut::write_pins(&st, m)?);
+                }
+            }
+        }
+        return files::commit_all(all);
     }
     export_units(sc, &[(unit, forms.to_vec())], dir)
 }
@@ -167,6 +178,7 @@ pub fn export_units(sc: &Scenario, set: &[(Unit, Vec<Form>)], dir: &Path) -> Res
                 (Unit::Chip, Form::Pins) => Box::new(record::ChipPins::create(&stem)?),
                 (Unit::Spi, Form::Pins) => Box::new(record::SpiPins::create(&stem)?),
                 (Unit::Spi, Form::Csv) => Box::new(record::SpiCsv::create(&stem.with_extension("csv"), sc.chip)?),
+                (Unit::Ramp, Form::Pins) => Box::new(record::RampPins::create(&stem)?),
                 (Unit::Ramp, Form::Csv) => Box::new(record::RampCsv::create(&stem.with_extension("csv"))?),
                 (Unit::Chain, Form::Csv) => Box::new(record::ChainCsv::create(&stem.with_extension("csv"))?),
                 _ => return Err(format!("unit {unit}: no {f:?} form")),
@@ -195,7 +207,7 @@ pub fn export_units(sc: &Scenario, set: &[(Unit, Vec<Form>)], dir: &Path) -> Res
 fn meta(unit: Unit, sc: &Scenario) -> Meta {
     let mut notes = sc.notes.clone();
     notes.push("line 0 is the reset edge (rst = 1); line k is the k-th CLK edge after it".into());
-    if unit == Unit::Chip {
+    if unit == Unit::Chip && !record::RTL_PENDING_PINS.is_empty() {
         notes.push(format!(
             "not_compared: pins the reference RTL does not drive yet ({})",
             record::RTL_PENDING_PINS.join(", ")
@@ -208,7 +220,7 @@ fn meta(unit: Unit, sc: &Scenario) -> Meta {
         scenario: sc.name.clone(),
         seed: sc.seed,
         cycles: 0,
-        replay: if unit == Unit::Chip && !sc.hold_only { "pending-motion-core" } else { "ready" },
+        replay: "ready",
         notes,
     }
 }

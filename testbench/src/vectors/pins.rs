@@ -267,6 +267,14 @@ impl PinWriter {
         r
     }
 
+    /// Appends `n` lines already encoded with a [`LineEncoder`] of the same layout.
+    pub fn encoded_lines(&mut self, bytes: &[u8], n: u64) -> Result<(), String> {
+        self.flush()?;
+        self.lines += n;
+        let r = self.hex.file().write_all(bytes);
+        r.map_err(|e| self.hex.error(e))
+    }
+
     pub fn lines(&self) -> u64 {
         self.lines
     }

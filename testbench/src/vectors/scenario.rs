@@ -68,9 +68,6 @@ pub struct Scenario {
     pub source: Source,
     /// What the scenario does (recorded in `.meta`).
     pub notes: Vec<String>,
-    /// Keeps the motors in HOLD_MODE and the driver chain idle: replayable on an RTL without
-    /// motion core and driver chain.
-    pub hold_only: bool,
 }
 
 /// The built-in scenarios: name and what they are for.
@@ -82,6 +79,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("ramp-modes", "RAMP_MODE, SOFT_MODE and VELOCITY_MODE moves, a reversal and HOLD_MODE with a v_actual write"),
     ("ramp-boundary", "v_max 2047 / a_max 2047, v_target -2048, a_max 0, v_min > v_max, a move across x = 2^23"),
     ("ramp-p-examples", "RAMP_MODE moves with the pmul/pdiv of the [428] §8.11 method (digest §5.5 rows)"),
+    ("ramp-unit", "the ramp unit in few cycles: RAMP_MODE and SOFT_MODE with the [428] §8.11 p example 2047/0/0, a soft switch stop and the latch, VELOCITY_MODE at a_max 2047 across x = 2^23 and back, a_max 0, HOLD_MODE with a v_actual write of -2048, usrs 7, a ustep_count write"),
     ("chain-datasheet", "Table 11-2 configuration, Table 12-2 LUT, the digest §5.2 datagrams and a cover datagram"),
     ("tables", "lut unit: complete tables, every usrs, both directions, every i_scale, sine and rhomb LUT"),
     ("random", "the co-simulation's seeded random register traffic (--seed, --cycles)"),
@@ -261,6 +259,27 @@ fn ramp_p_examples() -> B {
 
 const PEX_WAIT: u64 = 100_000;
 
+/// The ramp unit's pin-level golden set: ramp_div = pulse_div = 0 (a ramp and a pulse tick in
+/// every frame), so each case takes a few frames.
+fn ramp_unit() -> B {
+    let mut b = B::default();
+    // motor 0: RAMP_MODE, digest §5.5 row 2047/0/0 5 % (p_mul 243, pdiv 1), ustep_count write
+    b.m(0, 2, 50).m(0, 3, 2047).p_of(0, 2047, 0, 0, 0.05).m(0, 15, 0x80).m(0, 0, 60);
+    // motor 1: SOFT_MODE with SOFT_STOP and the same parameters, latch armed, moving left
+    b.m(1, 2, 10).m(1, 3, 2047).p_of(1, 2047, 0, 0, 0.05).m(1, IDX_RM, 0x400 | 1).m(1, 14, 0);
+    b.m(1, 0, (-1500i32) as u32);
+    // motor 2: VELOCITY_MODE at a_max 2047 (8 units per ramp tick), v_max 300, usrs 7, from
+    // x = 2^23 - 2 across the signed boundary
+    b.m(2, 1, 0x7F_FFFE).m(2, 3, 300).m(2, 6, 2047).m(2, 12, 7).m(2, IDX_RM, 2).m(2, 4, 2047);
+    // REF2 (motor 1's left switch) stops motor 1 softly and latches its position
+    b.wait(1500).pin(Pin::Ref2, true).wait(800).pin(Pin::Ref2, false).wait(1200);
+    // v_target -2048 acts as -2047, clamped to -v_max: back across 2^23; then a_max 0 freezes V
+    b.m(2, 4, 0x800).wait(3000).m(2, 6, 0).wait(300);
+    // HOLD_MODE: V only by v_actual writes (-2048 as -2047, C23)
+    b.m(2, IDX_RM, HOLD).m(2, 5, 0x800).wait(300).m(2, 5, 0).wait(200);
+    b
+}
+
 fn chain_datasheet() -> B {
     let mut b = B::default();
     // Table 11-3: the 18 configuration datagrams of Table 11-2
@@ -303,17 +322,18 @@ fn regmap_cells() -> [u8; 36] {
 
 /// Looks up a built-in scenario. `cycles`: length of `random`.
 pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Option<Scenario> {
-    let (b, hold_only) = match name {
-        "datasheet" => (datasheet(), true),
-        "registers" => (registers(chip), true),
-        "chip-hold" => (chip_hold(), true),
-        "reference-search" => (reference_search(), false),
-        "ramp-modes" => (ramp_modes(), false),
-        "ramp-boundary" => (ramp_boundary(), false),
-        "ramp-p-examples" => (ramp_p_examples(), false),
-        "chain-datasheet" => (chain_datasheet(), false),
+    let b = match name {
+        "datasheet" => datasheet(),
+        "registers" => registers(chip),
+        "chip-hold" => chip_hold(),
+        "reference-search" => reference_search(),
+        "ramp-modes" => ramp_modes(),
+        "ramp-boundary" => ramp_boundary(),
+        "ramp-p-examples" => ramp_p_examples(),
+        "ramp-unit" => ramp_unit(),
+        "chain-datasheet" => chain_datasheet(),
         // the lut unit's tables need no pins
-        "tables" => (B::default(), true),
+        "tables" => B::default(),
         "random" => {
             return Some(Scenario {
                 name: name.into(),
@@ -322,7 +342,6 @@ pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Opt
                 seed,
                 source: Source::Random { cycles, profile: Profile::Registers },
                 notes: vec!["co-simulation stimulus, register profile (docs/cosim.md)".into()],
-                hold_only: true,
             })
         }
         _ => return None,
@@ -337,7 +356,6 @@ pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Opt
         seed: 0,
         source: Source::Script { lines: b.lines, sck_half: SCK_HALF },
         notes: vec![desc],
-        hold_only,
     })
 }
 
@@ -358,7 +376,6 @@ pub fn from_file(path: &Path, chip: Chip, fclk: u64, sck_half: u32) -> Result<Sc
         seed: 0,
         source: Source::Script { lines, sck_half },
         notes: vec![format!("datagram script {}", path.display())],
-        hold_only: false,
     })
 }
 

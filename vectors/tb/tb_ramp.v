@@ -1,0 +1,30 @@
+// tb_ramp: replays pin-level vectors of unit `ramp` on tmc429_ramp (docs/vectors.md).
+//   iverilog -g2005 -I vectors/tb -o tb_ramp vectors/tb/tb_ramp.v rtl/tmc429_ramp.v
+//   vvp tb_ramp +hex=X.hex +cols=X.cols +meta=X.meta
+// One instance replays the motors of the file one after the other (each motor's lines begin
+// with its reset line). CHIP sets HAS_USTEP as tmc429_motor_regs does (0 on the TMC428) and is
+// checked against the .meta's chip_code.
+`timescale 1ns / 1ps
+`default_nettype none
+
+module tb_ramp;
+    parameter CHIP = 1;
+    localparam W_IN  = 114;
+    localparam W_OUT = 129;
+    localparam UNIT  = "ramp";
+
+`include "vec_player.vh"
+
+    tmc429_ramp #(.HAS_USTEP(CHIP != 0)) dut (
+        .clk(clk), .rst(vin[113]),
+        .run(vin[112]), .ramp_tick(vin[111]), .pulse_tick(vin[110]), .rm(vin[109:108]),
+        .x_target(vin[107:84]), .v_min(vin[83:73]), .a_max(vin[72:62]), .ref_conf(vin[61:58]),
+        .usrs(vin[57:55]), .dx_ref_tolerance(vin[54:43]), .vt(vin[42:31]),
+        .sw_l(vin[30]), .sw_r(vin[29]), .we(vin[28]), .widx(vin[27:24]), .wdata(vin[23:0]),
+        .x_actual(vout[128:105]), .v(vout[104:85]), .v_target(vout[84:73]),
+        .a_actual(vout[72:61]), .ustep(vout[60:53]), .acc(vout[52:42]), .step(vout[41]),
+        .dir(vout[40]), .x_latched(vout[39:16]), .lp(vout[15]), .xeqt(vout[14]),
+        .stop(vout[13]), .tol_ok(vout[12]), .v_actual(vout[11:0]));
+endmodule
+
+`default_nettype wire
