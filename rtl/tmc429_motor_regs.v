@@ -43,14 +43,15 @@ module tmc429_motor_regs #(
     output wire [10:0] pulse_acc,
     output wire        step,
     output wire        dir,
-    // driver side (C75, C40): {ramp_div, is_agtat, is_aleat, is_v0, a_threshold}
-    output wire [23:0] drv_conf
+    // driver side (C75): {is_agtat, is_aleat, is_v0, a_threshold}
+    output wire [19:0] drv_conf
 );
     reg [10:0] a_max, a_threshold;
     reg [2:0]  is_agtat, is_aleat, is_v0, usrs;
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
     reg [11:0] dx_ref_tolerance;
+    reg [12:0] tol_k;          // 4096 - dx_ref_tolerance, for the tolerance window's speed
     wire       lp, stop, tol_ok;
     wire [23:0] x_latched;
     wire [11:0] v_actual;
@@ -62,7 +63,7 @@ module tmc429_motor_regs #(
     tmc429_ramp #(.HAS_USTEP(HAS_IDX15)) u_ramp (
         .clk(clk), .rst(rst), .run(run), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
         .rm(rm), .x_target(x_target), .v_min(v_min), .a_max(a_max), .ref_conf(ref_conf),
-        .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
+        .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .tol_k(tol_k), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
         .we(we), .widx(widx), .wdata(wdata),
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
@@ -87,7 +88,7 @@ module tmc429_motor_regs #(
     wire [7:0] mask_nx = w_int ? wdata[15:8] : int_mask;
     wire [7:0] w1c     = w_int ? wdata[7:0] : 8'd0;
 
-    assign drv_conf = {ramp_div, is_agtat, is_aleat, is_v0, a_threshold};
+    assign drv_conf = {is_agtat, is_aleat, is_v0, a_threshold};
     assign irq  = int_flags != 8'd0;
 
     always @(posedge clk) begin
@@ -102,6 +103,7 @@ module tmc429_motor_regs #(
             int_hist <= 8'b0011_0101;   // the conditions of the reset state: no event at power-on
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
             dx_ref_tolerance <= 12'd0;
+            tol_k <= 13'd4096;
         end else begin
             if (run)
                 int_hist <= cond;
@@ -126,7 +128,10 @@ module tmc429_motor_regs #(
                            ramp_div <= wdata[11:8];
                            usrs <= wdata[2:0];
                        end
-                4'd13: dx_ref_tolerance <= wdata[11:0];
+                4'd13: begin
+                           dx_ref_tolerance <= wdata[11:0];
+                           tol_k <= 13'd4096 - {1'b0, wdata[11:0]};
+                       end
                 // IDX 1, 4, 5, 14, 15: motion state in tmc429_ramp; IDX 7 (a_actual) and
                 // 11 (above): no storage here
                 default: ;

@@ -3,7 +3,7 @@
 // TMC428 §8.6-§8.16).
 //
 // Every input is a level of the old state (C1); every output is a register of this unit
-// except the combinational condition outputs (xeqt, stop, tol_ok, v_actual, v_mag) which are
+// except the combinational condition outputs (xeqt, stop, tol_ok, v_actual) which are
 // functions of its registers and inputs. The port list is the boundary at which test vectors of
 // the unit are taken (rtl/README.md).
 //
@@ -36,6 +36,7 @@ module tmc429_ramp #(
     input  wire [3:0]  ref_conf,   // REF_RnL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L
     input  wire [2:0]  usrs,
     input  wire [11:0] dx_ref_tolerance,
+    input  wire [12:0] tol_k,      // 4096 - dx_ref_tolerance (kept with the register)
     input  wire [11:0] vt,         // committed target velocity (tmc429_vtarget)
     input  wire        sw_l,       // left and right switch (C60)
     input  wire        sw_r,
@@ -66,20 +67,23 @@ module tmc429_ramp #(
     wire        v_neg  = v[19];
     wire        v_zero = v == 20'd0;
     wire        v_lo0  = v[7:0] == 8'd0;
-    // |V| >> 8: for V < 0, (~V + 1) >> 8 = ~V[18:8] + (V[7:0] == 0)
-    wire [10:0] v_mag  = (v[18:8] ^ {11{v_neg}}) + {10'd0, v_neg & v_lo0};
+    // |V| >> 8: for V < 0, (~V + 1) >> 8 = ~V[18:8] + (V[7:0] == 0), i.e. v_mx + v_mc; the
+    // sum is not formed on its own: its users add v_mc as the carry into their own adder
+    wire [10:0] v_mx   = v[18:8] ^ {11{v_neg}};
+    wire        v_mc   = v_neg & v_lo0;
     // sign(V) * (|V| >> 8): V >> 8 rounded toward 0
     assign v_actual = v[19:8] + {11'd0, v_neg & ~v_lo0};
 
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
     wire        x_hi0 = x_actual[23:12] == 12'h000;
     wire        x_hi1 = x_actual[23:12] == 12'hFFF;
-    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096
-    /* verilator lint_off UNUSEDSIGNAL */     // only the borrow of the difference is used
+    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096,
+    // i.e. x_lo > k = 4096 - tol (k = tol_k, a register: one carry chain after x_actual)
+    /* verilator lint_off UNUSEDSIGNAL */     // only the borrows of the differences are used
     wire [12:0] x_dif = {1'b0, x_actual[11:0]} - {1'b0, dx_ref_tolerance};
+    wire [13:0] x_kd  = {1'b0, tol_k} - {2'b00, x_actual[11:0]};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [12:0] x_sum = {1'b0, x_actual[11:0]} + {1'b0, dx_ref_tolerance};
-    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_sum[12] & (x_sum[11:0] != 12'd0));
+    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_kd[13]);
 
     wire rnl      = ref_conf[3];
     wire soft_sw  = ref_conf[2];
@@ -94,41 +98,64 @@ module tmc429_ramp #(
     // ---- stop at target (C52) ------------------------------------------------------------------
     assign xeqt   = x_actual == x_target;
     /* verilator lint_off UNUSEDSIGNAL */     // borrow: |V|>>8 > v_min
-    wire [11:0] m_cmp = {1'b0, v_min} - {1'b0, v_mag};
+    wire [12:0] m_cmp = {1'b0, v_min, 1'b0} - {1'b0, v_mx, v_mc};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire at_stop  = ~rm[1] & xeqt & ~m_cmp[11];
+    wire at_stop  = ~rm[1] & xeqt & ~m_cmp[12];
     wire zero_v   = at_stop | (stop & ~soft_sw);
 
     // ---- ramp tick (C51) -------------------------------------------------------------------------
     // d = T - V; up = V < T; lands on T when |d| <= a_max, else V +- a_max; a_actual = the
     // change of V. |d| <= a_max needs d in [-2047, 2047]: the top bits of d are all 0 or all 1.
-    wire [11:0] t_hi  = (stop & soft_sw) ? 12'd0 : vt;
-    wire [20:0] d     = {t_hi[11], t_hi, 8'd0} - {v[19], v};
-    wire        up    = ~d[20] & (d != 21'd0);
-    wire        d_lo0 = d[20:11] == 10'h000;
-    wire        d_lo1 = d[20:11] == 10'h3FF;
+    // For speed everything that depends only on registers is formed for both targets, T = 256 vt
+    // (d_t) and T = 0 (soft stop, d_z), and for both step directions (v_up, v_dn); the switch
+    // stop condition, the slowest input, only selects among them.
     /* verilator lint_off UNUSEDSIGNAL */     // only the carry / sign are used
-    wire [11:0] d_le  = {1'b0, a_max} - {1'b0, d[10:0]};                // d <= a: no borrow
-    wire [11:0] d_ge  = d[11:0] + {1'b0, a_max};                        // d >= -a: sign 0
+    wire [20:0] d_t   = {vt[11], vt, 8'd0} - {v[19], v};
+    wire [20:0] d_z   = 21'd0 - {v[19], v};
+    wire [11:0] le_t  = {1'b0, a_max} - {1'b0, d_t[10:0]};              // d <= a: no borrow
+    wire [11:0] ge_t  = d_t[11:0] + {1'b0, a_max};                      // d >= -a: sign 0
+    wire [11:0] le_z  = {1'b0, a_max} - {1'b0, d_z[10:0]};
+    wire [11:0] ge_z  = d_z[11:0] + {1'b0, a_max};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire        land  = up ? (d_lo0 & ~d_le[11]) : ((d_lo1 & ~d_ge[11]) | (d == 21'd0));
-    wire [19:0] v_st  = v + (({9'd0, a_max} ^ {20{~up}}) + {19'd0, ~up});   // |V -+ a| < 2^19
-    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : v_st;
-    wire [11:0] a_rmp = v_rmp[11:0] - v[11:0];
+    wire        dz_t  = d_t == 21'd0;
+    wire        up_t  = ~d_t[20] & ~dz_t;
+    wire        land_t = up_t ? ((d_t[20:11] == 10'h000) & ~le_t[11])
+                              : (((d_t[20:11] == 10'h3FF) & ~ge_t[11]) | dz_t);
+    wire        up_z  = v_neg;                                          // d_z = -V > 0
+    wire        land_z = up_z ? ((d_z[20:11] == 10'h000) & ~le_z[11])
+                              : (((d_z[20:11] == 10'h3FF) & ~ge_z[11]) | v_zero);
+    wire        ss    = stop & soft_sw;                                 // soft stop: T = 0
+    wire [11:0] t_hi  = ss ? 12'd0 : vt;
+    wire        up    = ss ? up_z : up_t;
+    wire        land  = ss ? land_z : land_t;
+    wire [11:0] d_lo  = ss ? d_z[11:0] : d_t[11:0];
+    wire [11:0] a_neg = 12'd0 - {1'b0, a_max};
+    wire [19:0] v_up  = v + {9'd0, a_max};                              // |V -+ a| < 2^19
+    wire [19:0] v_dn  = v - {9'd0, a_max};
+    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
+    // the change of V: d when landing, else the step
+    wire [11:0] a_rmp = land ? d_lo : (up ? {1'b0, a_max} : a_neg);
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
-    wire [11:0] p_sum = {1'b0, acc} + {1'b0, zero_v ? 11'd0 : v_mag};
+    // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused); when V is zeroed
+    // this cycle the sum is acc (no carry), selected after the adder (zero_v is slow)
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [12:0] p_t   = {1'b0, acc, 1'b1} + {1'b0, v_mx, v_mc};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [11:0] p_sum = zero_v ? {1'b0, acc} : p_t[12:1];
     wire        p_step = pulse_tick & p_sum[11];
-    reg  [7:0]  inc;                 // 2^(6-usrs), usrs 7 as 6
+    reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
     always @(*) begin
-        case (usrs)
-        3'd0: inc = 8'd64;  3'd1: inc = 8'd32;  3'd2: inc = 8'd16;  3'd3: inc = 8'd8;
-        3'd4: inc = 8'd4;   3'd5: inc = 8'd2;   default: inc = 8'd1;
+        case ({v_neg, usrs})
+        4'd0: inc = 8'd64;  4'd1: inc = 8'd32;  4'd2: inc = 8'd16;  4'd3: inc = 8'd8;
+        4'd4: inc = 8'd4;   4'd5: inc = 8'd2;   4'd6, 4'd7: inc = 8'd1;
+        4'd8: inc = 8'hC0;  4'd9: inc = 8'hE0;  4'd10: inc = 8'hF0; 4'd11: inc = 8'hF8;
+        4'd12: inc = 8'hFC; 4'd13: inc = 8'hFE; default: inc = 8'hFF;
         endcase
     end
     wire [23:0] x_stp = x_actual + {{23{v_neg}}, 1'b1};
-    wire [7:0]  u_stp = ustep + ((inc ^ {8{v_neg}}) + {7'd0, v_neg});
+    wire [7:0]  u_stp = ustep + inc;
 
     // ---- µC writes (C3, C23) ------------------------------------------------------------------
     wire        w_x   = we & (widx == 4'd1);

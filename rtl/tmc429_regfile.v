@@ -44,7 +44,8 @@ module tmc429_regfile #(
     output wire [23:0] drv_gconf_nx,
     output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
     output wire [8:0]  drv_ifconf_nx,
-    output wire [71:0] drv_conf,       // motor m in [24m+23:24m]: {ramp_div, is_*, a_threshold}
+    output wire [59:0] drv_conf,       // motor m in [20m+19:20m]: {is_*, a_threshold}
+    output wire [2:0]  drv_ramp_tick,  // phase 30 of a ramp frame of motor m (not gated by run)
     output wire        drv_cw,         // cover datagram waiting
     output wire        drv_dgw,        // datagram-word write waiting
     output wire [5:0]  drv_cover_pos,
@@ -100,15 +101,23 @@ module tmc429_regfile #(
         .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
 
     // ---- frame schedule (C40, C41) ----------------------------------------------------
-    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div
+    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. The count
+    // is registered: the frame number of a phase-30 or -31 edge is the one of the edge before
+    // (the frame changes only after phase 31; powered down, the prescaler holds).
     wire [14:0] frame = prescaler[19:5];
-    reg  [3:0]  ones;
+    reg  [3:0]  ones_d, ones;
     integer k;
     always @(*) begin
-        ones = 4'd15;
+        ones_d = 4'd15;
         for (k = 14; k >= 0; k = k - 1)
             if (!frame[k])
-                ones = k[3:0];
+                ones_d = k[3:0];
+    end
+    always @(posedge clk) begin
+        if (rst)
+            ones <= 4'd0;
+        else
+            ones <= ones_d;
     end
     wire ph_ramp  = prescaler[4:0] == 5'd30;
     wire ph_pulse = prescaler[4:0] == 5'd31;
@@ -124,17 +133,20 @@ module tmc429_regfile #(
     wire [20:0] m_pmul;
     wire [11:0] m_pdiv, m_pulse_div, m_ramp_div;
     wire [35:0] m_vt;
+    wire [2:0]  ramp_tick;
+    assign drv_ramp_tick = ramp_tick;
 
     genvar g;
     generate
         for (g = 0; g < 3; g = g + 1) begin : mot
             wire present = (g == 0) | m_present1;
+            assign ramp_tick[g] = ph_ramp & (ones >= m_ramp_div[4*g+3:4*g]);
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & present),
                 .we(wr & present & (a7[6:4] == g)), .widx(a7[3:0]), .wdata(wdata),
                 .ridx(rd_addr[3:0]), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
-                .ramp_tick(ph_ramp & (ones >= m_ramp_div[4*g+3:4*g])),
+                .ramp_tick(ramp_tick[g]),
                 .pulse_tick(ph_pulse & (ones >= m_pulse_div[4*g+3:4*g])),
                 .vt(m_vt[12*g+11:12*g]),
                 .xeqt(xeqt[g]), .irq(irq[g]),
@@ -146,7 +158,7 @@ module tmc429_regfile #(
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
                 .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
                 .step(p_step[g]), .dir(p_dir[g]),
-                .drv_conf(drv_conf[24*g+23:24*g]));
+                .drv_conf(drv_conf[20*g+19:20*g]));
         end
     endgenerate
 

@@ -35,8 +35,25 @@ module tmc429_stepdir (
     reg [23:0] backlog, backlog_n;
 
     wire [8:0]  t_step = {stpdiv + 5'd1, 4'd0};
-    wire [23:0] bl     = backlog + (step_in ? (dir_in ? 24'hFFFFFF : 24'd1) : 24'd0);
-    wire        neg    = bl[23];
+    // The backlog after the motion core's step, b = backlog + s (s = +-1 or 0), is not formed:
+    // its sign and b != 0 follow from backlog = 0, 1, -1, and the new backlog is one addition
+    // backlog + s + t with t = -sign(b) when a STEP pulse starts (take), else 0.
+    wire        s_pos  = step_in & ~dir_in;
+    wire        s_neg  = step_in & dir_in;
+    wire        b_hi0  = backlog[23:1] == 23'd0;
+    wire        b_z    = b_hi0 & ~backlog[0];
+    wire        b_p1   = b_hi0 & backlog[0];
+    wire        b_m1   = backlog == 24'hFFFFFF;
+    wire        neg    = s_pos ? (backlog[23] & ~b_m1)
+                                : (s_neg ? (backlog[23] | b_z) : backlog[23]);     // b < 0
+    wire        bl_nz  = ~(s_pos ? b_m1 : (s_neg ? b_p1 : b_z));                    // b != 0
+    wire        hold   = (state != READY) && (cnt > 9'd1);
+    wire        pend   = (state == PULSE) && !step_half;
+    wire        take   = ~hold & ~pend & bl_nz & (neg == dir);
+    wire [2:0]  s_d    = s_pos ? 3'd1 : (s_neg ? 3'd7 : 3'd0);
+    wire [2:0]  t_d    = take ? (neg ? 3'd1 : 3'd7) : 3'd0;
+    wire [2:0]  dlt    = s_d + t_d;                                                 // -2..2
+    wire [23:0] bl     = backlog + {{21{dlt[2]}}, dlt};
 
     always @(*) begin
         state_n   = state;
@@ -53,23 +70,22 @@ module tmc429_stepdir (
                 dir_n     = 1'b0;
             end else begin
                 backlog_n = bl;
-                if (state != READY && cnt > 9'd1) begin
+                if (hold) begin
                     cnt_n = cnt - 9'd1;
-                end else if (state == PULSE && !step_half) begin
+                end else if (pend) begin
                     step_n  = 1'b0;
                     state_n = SPACE;
                     cnt_n   = t_step;
                 end else begin
                     state_n = READY;
-                    if (bl != 24'd0) begin
+                    if (bl_nz) begin
                         cnt_n = t_step;
                         if (neg != dir) begin
                             dir_n   = neg;             // C94: DIR first, STEP T later
                             state_n = DIRSET;
                         end else begin
-                            step_n    = step_half ? ~step : 1'b1;
-                            backlog_n = bl + (neg ? 24'd1 : 24'hFFFFFF);
-                            state_n   = PULSE;
+                            step_n    = step_half ? ~step : 1'b1;   // take: bl moves
+                            state_n   = PULSE;                      // toward 0 (t_d)
                         end
                     end
                 end

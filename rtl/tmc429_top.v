@@ -103,8 +103,9 @@ module tmc429_top #(
     wire [23:0] gconf, gconf_nx;
     wire [8:0]  ifconf, ifconf_nx;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [71:0] drv_conf;
-    wire [23:0] drv_m0 = drv_conf[23:0], drv_m1 = drv_conf[47:24], drv_m2 = drv_conf[71:48];
+    wire [59:0] drv_conf;
+    wire [2:0]  rtick;
+    wire [19:0] drv_m0 = drv_conf[19:0], drv_m1 = drv_conf[39:20], drv_m2 = drv_conf[59:40];
     wire [23:0] cover_datagram;
     wire        cw, dgw, take, ret_cw, ret_dgw, cover_busy, dgw_busy, ram_re;
     wire [5:0]  cover_pos, mux_sw, ram_q;
@@ -123,7 +124,7 @@ module tmc429_top #(
         .p_v_target(p_v_target), .p_a_actual(p_a_actual), .p_ustep(p_ustep),
         .p_pulse_acc(p_pulse_acc), .p_step(p_step), .p_dir(p_dir),
         .drv_gconf(gconf), .drv_gconf_nx(gconf_nx), .drv_ifconf(ifconf),
-        .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf),
+        .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf), .drv_ramp_tick(rtick),
         .drv_cw(cw), .drv_dgw(dgw), .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
         .drv_cover_datagram(cover_datagram),
         .chain_take(take), .chain_ret_cw(ret_cw), .chain_ret_dgw(ret_dgw),
@@ -155,28 +156,9 @@ module tmc429_top #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire       sd_nx    = (CHIP != 0) & ifconf_nx[5];
 
-    // ramp ticks (C40): phase 30 of the frames whose low ramp_div bits are all 1, i.e. whose
-    // number of trailing ones (shared by the motors) is at least ramp_div. The count is
-    // registered: the frame number of the phase-30 edge is the one of the edge before.
-    wire [14:0] frame = prescaler[19:5];
-    wire        ph30  = run & (prescaler[4:0] == 5'd30);
-    reg  [3:0]  frame_ones, frame_ones_q;
-    integer     fi;
-    always @(*) begin
-        frame_ones = 4'd15;
-        for (fi = 14; fi >= 0; fi = fi - 1)
-            if (!frame[fi])
-                frame_ones = fi[3:0];
-    end
-    always @(posedge clk) begin
-        if (rst)
-            frame_ones_q <= 4'd0;
-        else
-            frame_ones_q <= frame_ones;
-    end
-    wire [2:0]  ramp_tick = {ph30 & (frame_ones_q >= drv_m2[23:20]),
-                             ph30 & (frame_ones_q >= drv_m1[23:20]),
-                             ph30 & (frame_ones_q >= drv_m0[23:20])};
+    // ramp ticks (C40): phase 30 of the frames whose low ramp_div bits are all 1, from the
+    // frame schedule of the register file (the motors' own ramp ticks)
+    wire [2:0]  ramp_tick = rtick & {3{run}};
 
     // current scaling (C75-C77); the TMC4210 has none
     wire [2:0] is0, is1, is2;

@@ -158,7 +158,8 @@ module tmc429_vtarget #(
     // ---- B: square root / shift ------------------------------------------------------------
     reg [1:0]  b_rm;
     reg [10:0] b_vmin, b_vmax;
-    reg [11:0] b_vtg;
+    reg [11:0] b_vabs;            // |v_target| (VELOCITY_MODE), formed at the load
+    reg        b_vneg;
     reg        b_sgn, b_zero, b_odd;
     reg [2:0]  b_ne;
     reg [27:0] sr;
@@ -198,12 +199,14 @@ module tmc429_vtarget #(
 
     always @(posedge clk) begin
         if (rst) begin
-            b_rm <= 2'd0; b_vmin <= 11'd0; b_vmax <= 11'd0; b_vtg <= 12'd0;
+            b_rm <= 2'd0; b_vmin <= 11'd0; b_vmax <= 11'd0; b_vabs <= 12'd0; b_vneg <= 1'b0;
             b_sgn <= 1'b0; b_zero <= 1'b1; b_odd <= 1'b0; b_ne <= 3'd0;
             sr <= 28'd0; rem <= 13'd0; y <= 12'd0; sticky <= 1'b0;
         end else if (run) begin
             if (b_load) begin
-                b_rm <= a_rm; b_vmin <= a_vmin; b_vmax <= a_vmax; b_vtg <= a_vtg;
+                b_rm <= a_rm; b_vmin <= a_vmin; b_vmax <= a_vmax;
+                b_vabs <= a_vtg[11] ? (~a_vtg + 12'd1) : a_vtg;  // -2048 -> 2048 (>= v_max)
+                b_vneg <= a_vtg[11];
                 b_sgn <= a_sgn; b_zero <= a_zero; b_odd <= l_odd; b_ne <= l_ne;
             end
             if (b_run & step) begin
@@ -221,20 +224,27 @@ module tmc429_vtarget #(
     end
 
     // ---- C: clamp, sign -------------------------------------------------------------------
+    // min(max(mag, lo), v_max) with both comparisons of mag side by side (lo > v_max only
+    // depends on the snapshot); the sign is applied at the commit (vt_next holds sign and
+    // magnitude), so that no negation follows the comparisons
     wire        c_vel  = b_rm == 2'd2;
-    wire [11:0] vabs   = b_vtg[11] ? (~b_vtg + 12'd1) : b_vtg;   // -2048 -> 2048 (>= v_max)
     wire        y_sat  = sticky | (~b_odd & y[11]);
     wire [10:0] y_mag  = b_odd ? y[11:1] : y[10:0];
-    wire [11:0] mag    = c_vel ? vabs : {y_sat, y_mag};
+    wire [11:0] mag    = c_vel ? b_vabs : {y_sat, y_mag};
     wire [10:0] lo     = c_vel ? 11'd0 : b_vmin;
-    wire [11:0] m2     = (mag < {1'b0, lo}) ? {1'b0, lo} : mag;
-    wire [10:0] m3     = (m2 > {1'b0, b_vmax}) ? b_vmax : m2[10:0];
-    wire        c_neg  = c_vel ? b_vtg[11] : b_sgn;
+    wire        lo_gt  = lo > b_vmax;
+    wire [10:0] m3     = (mag < {1'b0, lo}) ? (lo_gt ? b_vmax : lo)
+                       : ((mag > {1'b0, b_vmax}) ? b_vmax : mag[10:0]);
+    wire        c_neg  = c_vel ? b_vneg : b_sgn;
     wire        c_none = (b_rm == 2'd3) | (~b_rm[1] & b_zero);
-    wire [11:0] m3s    = {1'b0, m3};
-    wire [11:0] res    = c_none ? 12'd0 : (c_neg ? (~m3s + 12'd1) : m3s);
+    // sign and magnitude; none = 0 (magnitude 0, sign 0)
+    wire [11:0] res    = c_none ? 12'd0 : {c_neg, m3};
+    function [11:0] sm2c;           // sign and magnitude -> two's complement
+        input [11:0] sm;
+        sm2c = sm[11] ? (12'd0 - {1'b0, sm[10:0]}) : {1'b0, sm[10:0]};
+    endfunction
 
-    reg [35:0] vt_next;           // motor m in [12m+11:12m]
+    reg [35:0] vt_next;           // motor m in [12m+11:12m], sign and magnitude
     reg [35:0] vt_r;
     wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
     always @(posedge clk) begin
@@ -249,7 +259,8 @@ module tmc429_vtarget #(
                 default: vt_next[35:24] <= res;
                 endcase
             if (commit)
-                vt_r <= vt_next & present;
+                vt_r <= {sm2c(vt_next[35:24]), sm2c(vt_next[23:12]), sm2c(vt_next[11:0])}
+                        & present;
         end
     end
 
