@@ -209,6 +209,27 @@ impl Rtl {
         self.sim.cycle()
     }
 
+    /// Sends one µC SPI frame through the pins (the other inputs held at `pins`) and returns the
+    /// bits read on the data pin — SDOZ_C while enabled, else nINT_SDO_C — first bit in the MSB
+    /// ([428] §6.2; the µC samples at the rising SCK_C edge).
+    pub fn spi_frame(&mut self, f: crate::stimulus::Frame, pins: Inputs) -> u64 {
+        use crate::stimulus::{Driver, Event, Txn};
+        let mut d = Driver::default();
+        d.inputs = pins;
+        d.start(Txn::Frame(f));
+        let mut reply = 0u64;
+        let mut out = self.outputs();
+        for _ in 0..f.cycles() {
+            let (inp, ev) = d.step();
+            if let Event::Sample(_) = ev {
+                let bit = if out.sdoz_c_oe { out.sdoz_c } else { out.nint_sdo_c };
+                reply = reply << 1 | bit as u64;
+            }
+            out = self.tick(&inp);
+        }
+        reply
+    }
+
     /// Output pins after the last tick.
     #[inline]
     pub fn outputs(&self) -> Outputs {

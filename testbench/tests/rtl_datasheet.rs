@@ -2,25 +2,13 @@
 //! [4210] §5.2.3 with erratum E2) and the contract's power-on values (C2, C29, C30).
 #![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
-use tmc429_model::{Chip, Outputs};
-use tmc429_testbench::stimulus::{Driver, Event, Frame, Txn};
+use tmc429_model::{Chip, Inputs};
+use tmc429_testbench::stimulus::Frame;
 use tmc429_testbench::{Rtl, Variant};
 
 /// Sends one 32-bit frame through the pins and returns the bits read on the data pin.
 fn frame(rtl: &mut Rtl, f: Frame) -> u32 {
-    let mut d = Driver::default();
-    d.start(Txn::Frame(f));
-    let mut reply = 0u32;
-    let mut out: Outputs = rtl.outputs();
-    for _ in 0..f.cycles() {
-        let (inp, ev) = d.step();
-        if let Event::Sample(_) = ev {
-            let bit = if out.sdoz_c_oe { out.sdoz_c } else { out.nint_sdo_c };
-            reply = reply << 1 | bit as u32;
-        }
-        out = rtl.tick(&inp);
-    }
-    reply
+    rtl.spi_frame(f, Inputs::default()) as u32
 }
 
 #[test]

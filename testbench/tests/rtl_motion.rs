@@ -3,27 +3,14 @@
 //! target (C52), VELOCITY_MODE reaching v_target (C51), the hard switch stop (C61) and the latch
 //! (C62). Register values are read back over SPI as a µC would.
 
-use tmc429_model::Chip;
-use tmc429_testbench::stimulus::{Driver, Event, Frame, Txn};
+use tmc429_model::{Chip, Inputs};
+use tmc429_testbench::stimulus::Frame;
 use tmc429_testbench::{Rtl, Variant};
 
 /// Sends one 32-bit frame through the pins (REF1 at `ref1`) and returns the 32 bits read on
 /// the data pin.
 fn frame(rtl: &mut Rtl, f: Frame, ref1: bool) -> u32 {
-    let mut d = Driver::default();
-    d.inputs.ref1 = ref1;
-    d.start(Txn::Frame(f));
-    let mut reply = 0u32;
-    let mut out = rtl.outputs();
-    for _ in 0..f.cycles() {
-        let (inp, ev) = d.step();
-        if let Event::Sample(_) = ev {
-            let bit = if out.sdoz_c_oe { out.sdoz_c } else { out.nint_sdo_c };
-            reply = reply << 1 | bit as u32;
-        }
-        out = rtl.tick(&inp);
-    }
-    reply
+    rtl.spi_frame(f, Inputs { ref1, ..Inputs::default() }) as u32
 }
 
 struct Chip1 {
