@@ -213,3 +213,32 @@ fn power_down_freezes_a_pulse() {
     }
     assert_eq!(running_edges_high, 48, "t_STEP = 16·(1 + 2) running edges");
 }
+
+/// C95: with STPDIV 15 (t_STEP = 256 CLK) the motion core steps faster than 1/(2·t_STEP) (one
+/// step per 32 CLK at v = 2047): the backlog grows and every step is still output later, one
+/// pulse of 256 CLK with at least 256 CLK between pulses; steps in the opposite direction cancel
+/// steps not yet output, so the driver ends exactly at x_actual with fewer pulses than steps.
+#[test]
+fn backlog_beyond_the_pulse_rate() {
+    let (mut h, t) = sd_host(Chip::Tmc429, 15, 0);
+    hold_velocity(&mut h, 0, 2047);
+    h.wait(20_000);
+    let x1 = h.read(motor_a7(0, 1));
+    hold_velocity(&mut h, 0, -2047);
+    h.wait(8_000);
+    hold_velocity(&mut h, 0, 0);
+    let x2 = h.read(motor_a7(0, 1));
+    // forward steps, then backward ones, all while the output lagged behind
+    assert!(x1 > 500 && x2 < x1 && x2 > 0, "x1 {x1}, x2 {x2}");
+    let emitted_early = pulses(&t.lock().unwrap(), |o| o.sdo_s).len() as u32;
+    assert!(emitted_early < x2, "the backlog is still there: {emitted_early} pulses, x_actual {x2}");
+    h.wait(400_000);
+    let tr = t.lock().unwrap();
+    let p = pulses(&tr, |o| o.sdo_s);
+    assert_eq!(p.len() as u32, x2, "pulses = x_actual: the backward steps cancelled forward ones");
+    assert!(p.iter().all(|&(_, l)| l == 256));
+    for w in p.windows(2) {
+        assert!(w[1].0 - (w[0].0 + w[0].1) >= 256);
+    }
+    assert!(tr.iter().all(|(_, o)| !o.sck_s), "no backward pulse: DIR stays low");
+}
