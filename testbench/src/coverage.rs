@@ -61,6 +61,12 @@ struct MotionSeen {
     cupd: [u16; 3],
 }
 
+/// The bin of a step at each usrs (named without formatting: it is hit in the per-cycle path).
+const USRS_STEP_BINS: [&str; 8] = [
+    "step with usrs 0", "step with usrs 1", "step with usrs 2", "step with usrs 3",
+    "step with usrs 4", "step with usrs 5", "step with usrs 6", "step with usrs 7",
+];
+
 /// Ramp mode names ([428] Table 8-3).
 pub const MODE_NAMES: [&str; 4] = ["RAMP_MODE", "SOFT_MODE", "VELOCITY_MODE", "HOLD_MODE"];
 
@@ -79,9 +85,7 @@ pub fn motion_bins(chip: Chip) -> Vec<String> {
     v.push("switch stop, soft".into());
     v.push("latch on a rising switch edge".into());
     v.push("latch on a falling switch edge".into());
-    for u in 0..8 {
-        v.push(format!("step with usrs {u}"));
-    }
+    v.extend(USRS_STEP_BINS.iter().map(|b| b.to_string()));
     v.push("step negative".into());
     v.push("step positive".into());
     if chip != Chip::Tmc4210 {
@@ -464,7 +468,7 @@ impl Coverage {
             let m = t.motor(i);
             let pm = &p.motor[i];
             if pm.step != 0 {
-                self.hit(&format!("step with usrs {}", m.usrs));
+                self.hit(USRS_STEP_BINS[(m.usrs & 7) as usize]);
                 self.hit(if pm.dir != 0 { "step negative" } else { "step positive" });
             }
             let stop = m.cond_prev & motor::INT_STOP != 0;
