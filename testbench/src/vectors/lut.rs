@@ -26,29 +26,48 @@ pub fn rhomb() -> [u8; 64] {
     y
 }
 
+/// One row of the tables: LUT name and values, usrs, direction, i_scale, the step number k
+/// and the full-wave index w it reaches.
+struct Row {
+    name: &'static str,
+    lut: [u8; 64],
+    usrs: u8,
+    neg: bool,
+    i_scale: u8,
+    k: u16,
+    w: u8,
+}
+
+/// Every row, in the order of the CSV: per LUT, usrs, direction, i_scale, the walk of one
+/// electrical period in steps of ±2^(6 − usrs) (usrs 7 as 6, C72).
+fn rows() -> impl Iterator<Item = Row> {
+    luts().into_iter().flat_map(|(name, lut)| {
+        (0..8u8).flat_map(move |usrs| {
+            let inc = 1u16 << (6 - usrs.min(6));
+            [false, true].into_iter().flat_map(move |neg| {
+                (0..8u8).flat_map(move |i_scale| {
+                    (0..256 / inc).map(move |k| {
+                        let w = if neg { (256 - (k * inc) % 256) % 256 } else { k * inc } as u8;
+                        Row { name, lut, usrs, neg, i_scale, k, w }
+                    })
+                })
+            })
+        })
+    })
+}
+
 pub const LUT_CSV_HEADER: &str = "lut,usrs,direction,i_scale,step,index,dac_a,dac_b,ph_a,ph_b,fd_a,fd_b";
 
 /// Writes the tables; the file is returned uncommitted.
 pub fn write(path: &std::path::Path) -> Result<AtomicFile, String> {
     let mut csv = Csv::create(path, LUT_CSV_HEADER)?;
-    for (name, lut) in luts() {
+    for row in rows() {
         let mut r = [0u8; 128];
-        r[microstep::LUT_BASE..].copy_from_slice(&lut);
-        for usrs in 0..8u8 {
-            let inc = 1u16 << (6 - usrs.min(6));
-            let n = 256 / inc;
-            for neg in [false, true] {
-                for i_scale in 0..8u8 {
-                    for k in 0..n {
-                        let w = if neg { (256 - (k * inc) % 256) % 256 } else { k * inc } as u8;
-                        let s = decode_signals(microstep::signals(&r, w, i_scale, neg, false, Polarity::default()));
-                        csv.field(name).field(usrs).field(if neg { "-" } else { "+" }).field(i_scale);
-                        csv.field(k).field(w).field(s[0]).field(s[3]).field(s[1]).field(s[4]).field(s[2]).field(s[5]);
-                        csv.end_row()?;
-                    }
-                }
-            }
-        }
+        r[microstep::LUT_BASE..].copy_from_slice(&row.lut);
+        let s = decode_signals(microstep::signals(&r, row.w, row.i_scale, row.neg, false, Polarity::default()));
+        csv.field(row.name).field(row.usrs).field(if row.neg { "-" } else { "+" }).field(row.i_scale);
+        csv.field(row.k).field(row.w).field(s[0]).field(s[3]).field(s[1]).field(s[4]).field(s[2]).field(s[5]);
+        csv.end_row()?;
     }
     Ok(csv.finish())
 }
@@ -104,39 +123,26 @@ pub fn pin_inputs(lut: &[u8; 64], row: u64, w: u8, i_scale: u8, negative: bool, 
 /// row k / 2. The files are returned uncommitted.
 pub fn write_pins(stem: &std::path::Path, mut meta: Meta) -> Result<Vec<AtomicFile>, String> {
     let mut pw = PinWriter::create(stem, lut_layout())?;
-    let mut row = 0u64;
-    for (_, lut) in luts() {
-        for usrs in 0..8u8 {
-            let inc = 1u16 << (6 - usrs.min(6));
-            let n = 256 / inc;
-            for neg in [false, true] {
-                for i_scale in 0..8u8 {
-                    for k in 0..n {
-                        let w = if neg { (256 - (k * inc) % 256) % 256 } else { k * inc } as u8;
-                        for coil_b in [false, true] {
-                            let i = pin_inputs(&lut, row, w, i_scale, neg, coil_b);
-                            let o = microstep::unit_ports(&i);
-                            pw.line(&[
-                                i.w as u64,
-                                i.coil_b as u64,
-                                i.lut as u64,
-                                i.i_scale as u64,
-                                i.code as u64,
-                                i.dac_q as u64,
-                                i.negative as u64,
-                                i.step as u64,
-                                i.pol.ph_ab as u64,
-                                i.pol.fd_ab as u64,
-                                i.pol.dac_ab as u64,
-                                o.lut_idx as u64,
-                                o.dac as u64,
-                                o.bit_out as u64,
-                            ])?;
-                        }
-                        row += 1;
-                    }
-                }
-            }
+    for (n, row) in rows().enumerate() {
+        for coil_b in [false, true] {
+            let i = pin_inputs(&row.lut, n as u64, row.w, row.i_scale, row.neg, coil_b);
+            let o = microstep::unit_ports(&i);
+            pw.line(&[
+                i.w as u64,
+                i.coil_b as u64,
+                i.lut as u64,
+                i.i_scale as u64,
+                i.code as u64,
+                i.dac_q as u64,
+                i.negative as u64,
+                i.step as u64,
+                i.pol.ph_ab as u64,
+                i.pol.fd_ab as u64,
+                i.pol.dac_ab as u64,
+                o.lut_idx as u64,
+                o.dac as u64,
+                o.bit_out as u64,
+            ])?;
         }
     }
     meta.notes.push(
