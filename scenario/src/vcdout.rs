@@ -17,7 +17,7 @@ use tmc429_model::{Inputs, Outputs, Probes};
 use tmc429_testbench::signals::{flatten, N_SIGNALS, SIGNALS};
 
 pub use tmc429_testbench::trace::INPUT_NAMES;
-use tmc429_testbench::trace::{add_signals, input_bits, put};
+use tmc429_testbench::trace::{add_signals, input_bits, put, put_text};
 
 /// Signals of [`SIGNALS`] not written (they change every cycle).
 pub const SKIPPED: [&str; 1] = ["prescaler"];
@@ -162,8 +162,7 @@ impl VcdWriter {
             self.last_mismatch = mismatch;
         }
         if let Some(t) = txn {
-            let s: String = t.chars().map(|c| if c.is_whitespace() { '_' } else { c }).collect();
-            self.w.change_string(self.txn, &s)?;
+            put_text(&mut self.w, self.txn, t)?;
         }
         Ok(())
     }

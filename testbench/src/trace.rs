@@ -73,6 +73,12 @@ pub fn put(w: &mut Writer<BufWriter<File>>, id: IdCode, width: u32, v: u64) -> i
     }
 }
 
+/// Writes a transaction's text to a string variable (blanks become `_`: VCD strings have none).
+pub fn put_text(w: &mut Writer<BufWriter<File>>, id: IdCode, text: &str) -> io::Result<()> {
+    let s: String = text.chars().map(|c| if c.is_whitespace() { '_' } else { c }).collect();
+    w.change_string(id, &s)
+}
+
 /// Every compared signal has a wire (nothing skipped).
 fn all(ids: [Option<IdCode>; N_SIGNALS]) -> [IdCode; N_SIGNALS] {
     ids.map(|id| id.unwrap_or(IdCode::FIRST))
@@ -162,8 +168,7 @@ impl TraceWriter {
         self.last_rtl = Some(fr);
         put(&mut self.w, self.mismatch, 1, mismatch as u64)?;
         if let Some(t) = txn {
-            let s: String = t.chars().map(|c| if c.is_whitespace() { '_' } else { c }).collect();
-            self.w.change_string(self.txn, &s)?;
+            put_text(&mut self.w, self.txn, t)?;
         }
         Ok(())
     }
