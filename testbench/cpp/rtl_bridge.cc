@@ -11,6 +11,10 @@
 #include "Vtmc429_429.h"
 #include "Vtmc429_4210.h"
 #include "Vtmc429_429_bug_status.h"
+#include "Vtmc429_428_tr.h"
+#include "Vtmc429_429_tr.h"
+#include "Vtmc429_4210_tr.h"
+#include "Vtmc429_429_bug_status_tr.h"
 
 namespace tmc429tb {
 namespace {
@@ -30,11 +34,13 @@ inline int32_t sext(uint32_t v, int bits) {
     p.dir = t.probe_m##N##_dir;                                           \
     p.pulse_acc = t.probe_m##N##_pulse_acc;
 
-template <class V>
+// V: a Verilated model; kTrace: built with --trace (the `…_tr` models of build.rs), else
+// trace_open fails.
+template <class V, bool kTrace>
 class RtlSimImpl final : public RtlSim {
 public:
     RtlSimImpl() : ctx_(new VerilatedContext) {
-        ctx_->traceEverOn(true);
+        ctx_->traceEverOn(kTrace);
         top_.reset(new V(ctx_.get(), "rtl"));
         V &t = *top_;
         t.nscs_c = 1;
@@ -117,24 +123,28 @@ public:
 
     bool trace_open(rust::Str path, uint64_t period_ps) override {
         trace_close();
-        std::string p(path.data(), path.size());
-        {
-            // VerilatedVcdC aborts the process on an unwritable path: check first
-            std::ofstream probe(p, std::ios::out | std::ios::trunc);
-            if (!probe) return false;
-        }
-        period_ = period_ps ? period_ps : 2;
-        tfp_.reset(new VerilatedVcdC);
-        top_->trace(tfp_.get(), 99);
-        tfp_->set_time_unit("1ps");
-        tfp_->set_time_resolution("1ps");
-        tfp_->open(p.c_str());
-        if (!tfp_->isOpen()) {
-            tfp_.reset();
+        if constexpr (!kTrace) {
             return false;
+        } else {
+            std::string p(path.data(), path.size());
+            {
+                // VerilatedVcdC aborts the process on an unwritable path: check first
+                std::ofstream probe(p, std::ios::out | std::ios::trunc);
+                if (!probe) return false;
+            }
+            period_ = period_ps ? period_ps : 2;
+            tfp_.reset(new VerilatedVcdC);
+            top_->trace(tfp_.get(), 99);
+            tfp_->set_time_unit("1ps");
+            tfp_->set_time_resolution("1ps");
+            tfp_->open(p.c_str());
+            if (!tfp_->isOpen()) {
+                tfp_.reset();
+                return false;
+            }
+            tfp_->dump(cycle_ * period_);
+            return true;
         }
-        tfp_->dump(cycle_ * period_);
-        return true;
     }
 
     void trace_close() override {
@@ -156,12 +166,21 @@ private:
 
 }  // namespace
 
-std::unique_ptr<RtlSim> new_rtl(uint32_t variant) {
+std::unique_ptr<RtlSim> new_rtl(uint32_t variant, bool traced) {
+    if (traced) {
+        switch (variant) {
+        case 0: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_428_tr, true>());
+        case 1: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_429_tr, true>());
+        case 2: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_4210_tr, true>());
+        case 3: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_429_bug_status_tr, true>());
+        default: return nullptr;
+        }
+    }
     switch (variant) {
-    case 0: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_428>());
-    case 1: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_429>());
-    case 2: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_4210>());
-    case 3: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_429_bug_status>());
+    case 0: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_428, false>());
+    case 1: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_429, false>());
+    case 2: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_4210, false>());
+    case 3: return std::unique_ptr<RtlSim>(new RtlSimImpl<Vtmc429_429_bug_status, false>());
     default: return nullptr;
     }
 }

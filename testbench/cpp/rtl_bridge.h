@@ -20,14 +20,15 @@ public:
     // Outputs and probes of the current state, without a clock edge.
     virtual void peek(RtlOutputs &out, RtlProbes &probes) const = 0;
     // Starts Verilator's VCD trace of every RTL signal; time unit 1 ps, one CLK period
-    // = period_ps. Returns false if the file cannot be opened.
+    // = period_ps. Returns false if the file cannot be opened or the model has no trace.
     virtual bool trace_open(rust::Str path, uint64_t period_ps) = 0;
     virtual void trace_close() = 0;
     virtual uint64_t cycle() const = 0;
 };
 
-// variant: 0 TMC428, 1 TMC429, 2 TMC4210, 3 TMC429 with PLANT_BUG_STATUS.
-// Returns nullptr for an unknown variant.
-std::unique_ptr<RtlSim> new_rtl(uint32_t variant);
+// variant: 0 TMC428, 1 TMC429, 2 TMC4210, 3 TMC429 with PLANT_BUG_STATUS. traced: the model
+// built with --trace (trace_open works; slower), else the one without (trace_open returns
+// false). Returns nullptr for an unknown variant.
+std::unique_ptr<RtlSim> new_rtl(uint32_t variant, bool traced);
 
 }  // namespace tmc429tb

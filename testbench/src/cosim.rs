@@ -202,7 +202,8 @@ fn rtl_trace_path(vcd: &Path) -> PathBuf {
 fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, String> {
     let chip = cfg.variant.chip();
     let mut model = Tmc429::new(chip);
-    let mut rtl = Rtl::try_new(cfg.variant)?;
+    // Verilator's trace code slows every cycle: only the traced run uses the model that has it
+    let mut rtl = if trace.is_some() { Rtl::try_new_traced(cfg.variant)? } else { Rtl::try_new(cfg.variant)? };
     let mut stim = Stimulus::new(chip, cfg.profile, cfg.seed);
     let mut drv = Driver::default();
     let mut cov = Coverage::new(chip, cfg.profile);

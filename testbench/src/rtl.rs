@@ -106,7 +106,7 @@ mod ffi {
 
         type RtlSim;
 
-        fn new_rtl(variant: u32) -> UniquePtr<RtlSim>;
+        fn new_rtl(variant: u32, traced: bool) -> UniquePtr<RtlSim>;
         fn tick(self: Pin<&mut RtlSim>, inp: &RtlInputs, out: &mut RtlOutputs, probes: &mut RtlProbes);
         fn peek(self: &RtlSim, out: &mut RtlOutputs, probes: &mut RtlProbes);
         fn trace_open(self: Pin<&mut RtlSim>, path: &str, period_ps: u64) -> bool;
@@ -151,10 +151,15 @@ impl fmt::Display for Variant {
 }
 
 /// A Verilated `tmc429_top`, in the reset state after construction.
+///
+/// Two builds of each variant exist (testbench/build.rs): [`Rtl::new`] takes the one without
+/// Verilator's trace code (faster), [`Rtl::new_traced`] the one with it, the only one on which
+/// [`Rtl::trace_open`] works.
 #[cfg(not(tmc429_no_rtl))]
 pub struct Rtl {
     sim: cxx::UniquePtr<ffi::RtlSim>,
     variant: Variant,
+    traced: bool,
     inp: ffi::RtlInputs,
     out: ffi::RtlOutputs,
     probes: ffi::RtlProbes,
@@ -167,12 +172,28 @@ impl Rtl {
         Ok(Rtl::new(variant))
     }
 
+    /// The model of `variant` built with Verilator's trace, or [`MISSING`].
+    pub fn try_new_traced(variant: Variant) -> Result<Rtl, String> {
+        Ok(Rtl::build(variant, true))
+    }
+
+    /// The model of `variant` without trace code.
     pub fn new(variant: Variant) -> Rtl {
-        let sim = ffi::new_rtl(variant.code());
+        Rtl::build(variant, false)
+    }
+
+    /// The model of `variant` built with Verilator's trace ([`Rtl::trace_open`]).
+    pub fn new_traced(variant: Variant) -> Rtl {
+        Rtl::build(variant, true)
+    }
+
+    fn build(variant: Variant, traced: bool) -> Rtl {
+        let sim = ffi::new_rtl(variant.code(), traced);
         assert!(!sim.is_null(), "every Variant has a Verilated model");
         let mut rtl = Rtl {
             sim,
             variant,
+            traced,
             inp: ffi::RtlInputs::default(),
             out: ffi::RtlOutputs::default(),
             probes: ffi::RtlProbes::default(),
@@ -281,8 +302,15 @@ impl Rtl {
         }
     }
 
-    /// Starts Verilator's VCD trace of every RTL signal from the next tick on.
+    /// Starts Verilator's VCD trace of every RTL signal from the next tick on (only on a model
+    /// made by [`Rtl::new_traced`]).
     pub fn trace_open(&mut self, path: &Path, fclk_hz: u64) -> Result<(), String> {
+        if !self.traced {
+            return Err(format!(
+                "{}: this RTL model has no trace code (Rtl::new_traced makes one that has)",
+                path.display()
+            ));
+        }
         let s = path.to_str().ok_or_else(|| format!("{}: path is not UTF-8", path.display()))?;
         let period = period_ps(fclk_hz);
         if self.sim.pin_mut().trace_open(s, period) {
@@ -310,8 +338,17 @@ impl Rtl {
         Err(MISSING.to_string())
     }
 
+    pub fn try_new_traced(_variant: Variant) -> Result<Rtl, String> {
+        Err(MISSING.to_string())
+    }
+
     /// Panics: callers that can report an error use [`Rtl::try_new`].
     pub fn new(_variant: Variant) -> Rtl {
+        panic!("{MISSING}")
+    }
+
+    /// Panics: callers that can report an error use [`Rtl::try_new_traced`].
+    pub fn new_traced(_variant: Variant) -> Rtl {
         panic!("{MISSING}")
     }
 
