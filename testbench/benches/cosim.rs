@@ -1,10 +1,13 @@
 //! CLK cycles per second of the Verilated RTL alone, of the lock-step pair (model + RTL +
-//! comparison) on pre-generated pin stimulus, and of the whole `tmc429 cosim` loop
-//! (stimulus generation, transaction log, coverage). Results: docs/performance.md.
+//! comparison) on pre-generated pin stimulus — on two threads as `tmc429 cosim` runs it
+//! ([`tmc429_testbench::pair::run_pair`]) and on one — and of the whole `tmc429 cosim` loop
+//! (stimulus generation, transaction log, coverage; two threads). Results:
+//! docs/performance.md.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 
 use tmc429_model::{Chip, Inputs, Tmc429};
+use tmc429_testbench::pair::{run_pair, Step, BATCH};
 use tmc429_testbench::signals::{agree, Compare};
 use tmc429_testbench::stimulus::{Driver, Profile, Stimulus};
 use tmc429_testbench::{run, Config, Rtl, Variant};
@@ -43,6 +46,25 @@ fn bench(c: &mut Criterion) {
     });
 
     g.bench_function("lockstep_pair_tmc429", |b| {
+        let mask = Compare::all();
+        b.iter(|| {
+            let mut model = Tmc429::new(chip);
+            let reset = (model.outputs(), model.probes());
+            let mut rest = inp.chunks(BATCH);
+            let first = run_pair(Variant::Chip(chip), mask, reset, |buf| {
+                let Some(chunk) = rest.next() else { return false };
+                for i in chunk {
+                    let out = model.tick(i);
+                    buf.push(Step { inp: *i, out, probes: model.probes() });
+                }
+                true
+            })
+            .unwrap();
+            assert_eq!(first, None);
+        })
+    });
+
+    g.bench_function("lockstep_pair_1thread_tmc429", |b| {
         let mask = Compare::all();
         b.iter(|| {
             let mut model = Tmc429::new(chip);

@@ -5,9 +5,10 @@ use std::collections::VecDeque;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use tmc429_model::{Chip, Outputs, Tmc429};
+use tmc429_model::{Chip, Inputs, Outputs, Probes, Tmc429};
 
 use crate::coverage::{reg_name, Coverage};
+use crate::pair::{run_pair, Step, BATCH};
 use crate::rtl::{Rtl, Variant};
 use crate::signals::{agree, diff, flatten, format_value, Compare, Diff};
 use crate::stimulus::{Driver, Event, Frame, PinLevels, Profile, Stimulus, Txn};
@@ -197,24 +198,121 @@ fn rtl_trace_path(vcd: &Path) -> PathBuf {
     }
 }
 
-/// Runs model and RTL in lock-step. Stops at the first mismatch. `trace`: write a VCD of the
-/// ticks `from..to` (0-based tick index) to this path.
+/// The model side of a run: stimulus, pin driver, golden model and coverage, and the frame in
+/// progress. The same for the single-thread loop ([`simulate`]) and the two-thread pair
+/// ([`simulate_pair`]): nothing in it reads the RTL except the RTL's reply bits of the frame in
+/// progress, which only the single-thread loop records (for the mismatch report).
+struct ModelSide {
+    chip: Chip,
+    profile: Profile,
+    model: Tmc429,
+    stim: Stimulus,
+    drv: Driver,
+    cov: Coverage,
+    /// The SPI frame in progress.
+    current: Option<TxnRecord>,
+    frames: u64,
+    pin_changes: u64,
+    /// The model's outputs after the last edge.
+    mo: Outputs,
+}
+
+impl ModelSide {
+    fn new(cfg: &Config) -> ModelSide {
+        let chip = cfg.variant.chip();
+        let model = Tmc429::new(chip);
+        let drv = Driver::default();
+        let mut cov = Coverage::new(chip, cfg.profile);
+        let idle = &drv.inputs;
+        cov.set_initial_pins(PinLevels {
+            ref_: [idle.ref1, idle.ref2, idle.ref3],
+            refr: [idle.refr1, idle.refr2, idle.refr3],
+            sdi_s: idle.sdi_s,
+        });
+        ModelSide {
+            chip,
+            profile: cfg.profile,
+            mo: model.outputs(),
+            model,
+            stim: Stimulus::new(chip, cfg.profile, cfg.seed),
+            drv,
+            cov,
+            current: None,
+            frames: 0,
+            pin_changes: 0,
+        }
+    }
+
+    /// Edge `n` (0-based) of the model side: the next transaction when the driver is ready,
+    /// the driver's pins, the data pin sampled by the µC, then the model's edge and the
+    /// coverage. `ro`: the RTL's outputs before the edge, for the RTL's reply bits (the
+    /// single-thread loop). Returns the inputs, the model's probes after the edge and the frame
+    /// that ended with this edge.
+    #[inline]
+    fn step(&mut self, n: u64, ro: Option<&Outputs>) -> (Inputs, Probes, Option<TxnRecord>) {
+        if self.drv.ready() {
+            let t = self.stim.next_txn();
+            match &t {
+                Txn::Frame(f) => {
+                    self.frames += 1;
+                    self.current = Some(TxnRecord {
+                        start: n + 1,
+                        end: 0,
+                        frame: *f,
+                        reply_model: 0,
+                        reply_rtl: 0,
+                        bits: 0,
+                    });
+                }
+                Txn::Pins { levels, .. } => {
+                    self.pin_changes += 1;
+                    self.cov.pins(levels);
+                }
+                Txn::Idle(_) => {}
+            }
+            self.drv.start(t);
+        }
+        let (inp, ev) = self.drv.step();
+        let mut ended: Option<TxnRecord> = None;
+        match ev {
+            Event::Sample(_) => {
+                if let Some(c) = self.current.as_mut() {
+                    c.reply_model = c.reply_model << 1 | data_pin(&self.mo);
+                    if let Some(ro) = ro {
+                        c.reply_rtl = c.reply_rtl << 1 | data_pin(ro);
+                    }
+                    c.bits += 1;
+                }
+            }
+            Event::FrameEnd(f) => {
+                if let Some(mut c) = self.current.take() {
+                    c.end = n + 1;
+                    self.cov.frame(self.chip, &f, c.reply_model, &self.model);
+                    ended = Some(c);
+                }
+            }
+            Event::None => {}
+        }
+
+        self.mo = self.model.tick(&inp);
+        let mp = self.model.probes();
+        self.cov.cycle(&self.mo, &mp);
+        self.cov.model(&self.model, &mp);
+        if self.profile == Profile::Drivers {
+            self.cov.drivers(self.chip, &self.mo, &mp, &self.model);
+        }
+        (inp, mp, ended)
+    }
+}
+
+/// Runs model and RTL in lock-step on one thread. Stops at the first mismatch. `trace`: write a
+/// VCD of the ticks `from..to` (0-based tick index) to this path.
 fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, String> {
     let chip = cfg.variant.chip();
-    let mut model = Tmc429::new(chip);
     // Verilator's trace code slows every cycle: only the traced run uses the model that has it
     let mut rtl = if trace.is_some() { Rtl::try_new_traced(cfg.variant)? } else { Rtl::try_new(cfg.variant)? };
-    let mut stim = Stimulus::new(chip, cfg.profile, cfg.seed);
-    let mut drv = Driver::default();
-    let mut cov = Coverage::new(chip, cfg.profile);
-    let idle = &drv.inputs;
-    cov.set_initial_pins(PinLevels {
-        ref_: [idle.ref1, idle.ref2, idle.ref3],
-        refr: [idle.refr1, idle.refr2, idle.refr3],
-        sdi_s: idle.sdi_s,
-    });
+    let mut side = ModelSide::new(cfg);
     let mut history: VecDeque<TxnRecord> = VecDeque::with_capacity(HISTORY + 1);
-    let mut current: Option<TxnRecord> = None;
     let mut out = Outcome {
         variant: cfg.variant,
         seed: cfg.seed,
@@ -225,18 +323,17 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         coverage: Coverage::default(),
         vcd_files: Vec::new(),
     };
-    let mut mo = model.outputs();
     let mut ro = rtl.outputs();
 
     // the reset states must agree before the first edge
-    let (mp0, rp0) = (model.probes(), rtl.probes());
+    let (mo, mp0, rp0) = (side.mo, side.model.probes(), rtl.probes());
     if !agree(cfg.compare, &mo, &mp0, &ro, &rp0) {
         out.mismatch = Some(Mismatch {
             cycle: 0,
             diffs: diff(cfg.compare, &flatten(&mo, &mp0), &flatten(&ro, &rp0)),
             history: Vec::new(),
         });
-        out.coverage = cov;
+        out.coverage = side.cov;
         return Ok(out);
     }
 
@@ -256,61 +353,16 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
                 rtl.trace_open(&rtl_trace_path(path), cfg.fclk)?;
             }
         }
-        if drv.ready() {
-            let t = stim.next_txn();
-            match &t {
-                Txn::Frame(f) => {
-                    out.frames += 1;
-                    current = Some(TxnRecord {
-                        start: n + 1,
-                        end: 0,
-                        frame: *f,
-                        reply_model: 0,
-                        reply_rtl: 0,
-                        bits: 0,
-                    });
-                }
-                Txn::Pins { levels, .. } => {
-                    out.pin_changes += 1;
-                    cov.pins(levels);
-                }
-                Txn::Idle(_) => {}
+        let (inp, mp, ended) = side.step(n, Some(&ro));
+        if let Some(c) = ended {
+            if history.len() == HISTORY {
+                history.pop_front();
             }
-            drv.start(t);
+            history.push_back(c);
         }
-        let (inp, ev) = drv.step();
-        let mut ended: Option<TxnRecord> = None;
-        match ev {
-            Event::Sample(_) => {
-                if let Some(c) = current.as_mut() {
-                    c.reply_model = c.reply_model << 1 | data_pin(&mo);
-                    c.reply_rtl = c.reply_rtl << 1 | data_pin(&ro);
-                    c.bits += 1;
-                }
-            }
-            Event::FrameEnd(f) => {
-                if let Some(mut c) = current.take() {
-                    c.end = n + 1;
-                    cov.frame(chip, &f, c.reply_model, &model);
-                    if history.len() == HISTORY {
-                        history.pop_front();
-                    }
-                    history.push_back(c);
-                    ended = Some(c);
-                }
-            }
-            Event::None => {}
-        }
-
-        mo = model.tick(&inp);
+        let mo = side.mo;
         ro = rtl.tick(&inp);
-        let mp = model.probes();
         let rp = rtl.probes();
-        cov.cycle(&mo, &mp);
-        cov.model(&model, &mp);
-        if cfg.profile == Profile::Drivers {
-            cov.drivers(chip, &mo, &mp, &model);
-        }
         let ok = agree(cfg.compare, &mo, &mp, &ro, &rp);
         if let Some(w) = writer.as_mut() {
             let txt = ended.map(|c| c.short(chip));
@@ -326,7 +378,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         out.cycles = n + 1;
         if !ok && out.mismatch.is_none() {
             let mut h: Vec<TxnRecord> = history.iter().copied().collect();
-            if let Some(c) = current {
+            if let Some(c) = side.current {
                 h.push(c);
                 if h.len() > HISTORY {
                     h.remove(0);
@@ -337,7 +389,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
                 diffs: diff(cfg.compare, &flatten(&mo, &mp), &flatten(&ro, &rp)),
                 history: h,
             });
-            counted = (n + 1, out.frames, out.pin_changes);
+            counted = (n + 1, side.frames, side.pin_changes);
             if trace.is_none() || n + 1 >= t_to {
                 break;
             }
@@ -350,18 +402,61 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         w.finish().map_err(|e| format!("writing VCD: {e}"))?;
         rtl.trace_close();
     }
+    (out.frames, out.pin_changes) = (side.frames, side.pin_changes);
     if out.mismatch.is_some() {
         (out.cycles, out.frames, out.pin_changes) = counted;
     }
-    out.coverage = cov;
+    out.coverage = side.cov;
     Ok(out)
 }
 
-/// Runs the co-simulation; on a mismatch with `cfg.vcd` set, runs it again (the stimulus is
-/// seeded) and writes the VCD window around the mismatch.
+/// Runs model and RTL in lock-step on two threads ([`crate::pair::run_pair`]): the model side
+/// on this thread, the RTL and the comparison on a second one. Without a mismatch the outcome
+/// is the model side's (cycles, transactions, coverage), which does not depend on the RTL; on a
+/// mismatch the run is made again by the single-thread loop [`simulate`] (the stimulus is
+/// seeded), which stops at the same first mismatch and gives the report: the outcome is the
+/// same as [`simulate`]'s either way.
+fn simulate_pair(cfg: &Config) -> Result<Outcome, String> {
+    let mut side = ModelSide::new(cfg);
+    let reset = (side.mo, side.model.probes());
+    let mut n = 0u64;
+    let first = run_pair(cfg.variant, cfg.compare, reset, |buf| {
+        let end = (n + BATCH as u64).min(cfg.cycles);
+        while n < end {
+            let (inp, probes, _) = side.step(n, None);
+            buf.push(Step { inp, out: side.mo, probes });
+            n += 1;
+        }
+        n < cfg.cycles
+    })?;
+    if first.is_some() {
+        return simulate(cfg, None);
+    }
+    Ok(Outcome {
+        variant: cfg.variant,
+        seed: cfg.seed,
+        cycles: cfg.cycles,
+        frames: side.frames,
+        pin_changes: side.pin_changes,
+        mismatch: None,
+        coverage: side.cov,
+        vcd_files: Vec::new(),
+    })
+}
+
+/// The co-simulation on one thread, without VCD (`cfg.vcd` is ignored): the loop the mismatch
+/// report comes from. Gives the same outcome as [`run`] without `vcd`, which runs the pair on
+/// two threads (tests/pair.rs).
+pub fn run_one_thread(cfg: &Config) -> Result<Outcome, String> {
+    simulate(cfg, None)
+}
+
+/// Runs the co-simulation: without `cfg.vcd` on two threads ([`crate::pair`]); with it on one
+/// (the traced RTL model), and on a mismatch again (the stimulus is seeded) to write the VCD
+/// window around the mismatch.
 pub fn run(cfg: &Config) -> Result<Outcome, String> {
     let Some(vcd) = cfg.vcd.as_deref() else {
-        return simulate(cfg, None);
+        return simulate_pair(cfg);
     };
     let first = simulate(cfg, Some((vcd, 0, VCD_CYCLES_WITHOUT_MISMATCH.min(cfg.cycles))))?;
     let mut out = match &first.mismatch {

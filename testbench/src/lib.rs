@@ -7,10 +7,12 @@
 //! - [`coverage`]: functional coverage bins;
 //! - [`trace`]: the side-by-side VCD;
 //! - [`cosim`]: the lock-step run and its report;
+//! - [`pair`]: the lock-step pair on two threads (model side and RTL side);
 //! - [`vectors`]: test vectors from the golden model (docs/vectors.md).
 pub mod cosim;
 mod motion_stim;
 pub mod coverage;
+pub mod pair;
 pub mod rtl;
 pub mod signals;
 pub mod stimulus;

@@ -1,0 +1,85 @@
+//! The lock-step pair on two threads (docs/cosim.md "How it works", docs/performance.md).
+//!
+//! The stimulus is open-loop ([`crate::stimulus::Stimulus::next_txn`] never reads an output),
+//! so the model side — stimulus, pin driver, golden model, coverage — can run ahead of the RTL.
+//! [`run_pair`] runs the model side on the calling thread and the Verilated RTL on a second
+//! thread; the model side hands over batches of [`Step`]s (the inputs of one edge and the
+//! model's outputs and probes after it) through a bounded channel, and the RTL side applies the
+//! same inputs and compares every cycle under the [`Compare`] mask, exactly as the single-thread
+//! loop does. It stops at the first disagreement and reports only its cycle: the caller makes
+//! the full report by running the single-thread loop again (the stimulus is seeded), so the
+//! report is the same whichever way the run was made.
+
+use std::sync::mpsc::{sync_channel, TryRecvError};
+
+use tmc429_model::{Inputs, Outputs, Probes};
+
+use crate::rtl::{Rtl, Variant};
+use crate::signals::{agree, Compare};
+
+/// CLK cycles per batch handed from the model side to the RTL side.
+pub const BATCH: usize = 1024;
+
+/// Batches in flight between the two sides: bounds the memory and how far the model side
+/// runs past a mismatch.
+const DEPTH: usize = 4;
+
+/// One CLK edge of the model side: the inputs applied before it and the model's outputs and
+/// probes after it.
+#[derive(Clone, Copy, Debug)]
+pub struct Step {
+    pub inp: Inputs,
+    pub out: Outputs,
+    pub probes: Probes,
+}
+
+/// Runs the model side (`fill`, on this thread) and the RTL of `variant` (on a second thread)
+/// in lock-step. `reset`: the model's outputs and probes before the first edge. `fill` appends
+/// the next steps to its (empty) argument — any number, usually [`BATCH`] — and returns whether
+/// more follow; it is not called again after a mismatch was found.
+///
+/// Returns the first cycle whose states differ under `compare` (1 = the first edge, 0 = the
+/// reset states), or `None` if every step agreed; `Err` if the RTL cannot be made (a build
+/// without Verilator: [`crate::rtl::MISSING`]).
+pub fn run_pair<F>(variant: Variant, compare: Compare, reset: (Outputs, Probes), mut fill: F) -> Result<Option<u64>, String>
+where
+    F: FnMut(&mut Vec<Step>) -> bool,
+{
+    let (tx, rx) = sync_channel::<Vec<Step>>(DEPTH);
+    // emptied batches go back to the model side, so that no batch is allocated per round
+    let (back_tx, back_rx) = sync_channel::<Vec<Step>>(DEPTH + 2);
+    std::thread::scope(|s| {
+        let rtl_side = s.spawn(move || -> Result<Option<u64>, String> {
+            let mut rtl = Rtl::try_new(variant)?;
+            if !agree(compare, &reset.0, &reset.1, &rtl.outputs(), &rtl.probes()) {
+                return Ok(Some(0));
+            }
+            let mut n = 0u64;
+            for batch in rx {
+                for st in &batch {
+                    n += 1;
+                    let ro = rtl.tick(&st.inp);
+                    if !agree(compare, &st.out, &st.probes, &ro, &rtl.probes()) {
+                        return Ok(Some(n));
+                    }
+                }
+                let _ = back_tx.try_send(batch);
+            }
+            Ok(None)
+        });
+        loop {
+            let mut buf = match back_rx.try_recv() {
+                Ok(b) => b,
+                Err(TryRecvError::Empty | TryRecvError::Disconnected) => Vec::with_capacity(BATCH),
+            };
+            buf.clear();
+            let more = fill(&mut buf);
+            // a send fails when the RTL side has stopped (mismatch or error)
+            if (!buf.is_empty() && tx.send(buf).is_err()) || !more {
+                break;
+            }
+        }
+        drop(tx);
+        rtl_side.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
+    })
+}
