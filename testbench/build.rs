@@ -66,6 +66,9 @@ fn main() {
     println!("cargo:rerun-if-changed=src/rtl.rs");
 
     let mut generated = Vec::new();
+    // whether every untraced model keeps its clock's previous value in `__Vtrigrprev__TOP__clk`
+    // (Verilator 5.006); then the bridge applies the falling edge without an eval
+    let mut falling_edge_flag = true;
     for (base, chip, defines) in VARIANTS {
         for traced in [false, true] {
             let prefix = if traced { format!("{base}_tr") } else { base.to_string() };
@@ -95,6 +98,9 @@ fn main() {
                 panic!("cannot run `{verilator}` ({e}); install Verilator 5 (scripts/setup)")
             });
             assert!(status.success(), "verilator failed for {prefix}");
+            if !traced {
+                falling_edge_flag &= has_trigger_flag(&mdir, &prefix);
+            }
             generated.extend(generated_sources(&mdir, &prefix));
         }
     }
@@ -147,6 +153,7 @@ fn main() {
     for (k, v) in defines {
         build.define(k, v);
     }
+    build.define("TMC429_VL_TRIGRPREV", if falling_edge_flag { "1" } else { "0" });
     build.compile("tmc429_vrtl");
     println!("cargo:rustc-link-lib=pthread");
 }
@@ -176,6 +183,14 @@ fn no_rtl(verilator: &str) {
         }
     }
     println!("cargo:rerun-if-env-changed=PATH");
+}
+
+/// Whether the model `prefix` keeps the previous value of `clk` for its edge detection in the
+/// member `__Vtrigrprev__TOP__clk` of its root class (Verilator 5.006; other versions name it
+/// otherwise, and the bridge then evaluates the falling edge like any other).
+fn has_trigger_flag(mdir: &Path, prefix: &str) -> bool {
+    fs::read_to_string(mdir.join(format!("{prefix}___024root.h")))
+        .is_ok_and(|h| h.contains("CData/*0:0*/ __Vtrigrprev__TOP__clk;"))
 }
 
 /// The .cpp files Verilator generated for one prefix.
