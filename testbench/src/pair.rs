@@ -20,9 +20,10 @@ use crate::signals::{agree, Compare};
 /// CLK cycles per batch handed from the model side to the RTL side.
 pub const BATCH: usize = 1024;
 
-/// Batches in flight between the two sides: bounds the memory and how far the model side
-/// runs past a mismatch.
-const DEPTH: usize = 4;
+/// Batches in flight between the two sides (about 2 MB): bounds the memory and how far the
+/// model side runs past a mismatch. 16 batches are a few milliseconds of the RTL's work, so
+/// that on a busy machine the RTL thread can go on while the model thread waits for a core.
+const DEPTH: usize = 16;
 
 /// One CLK edge of the model side: the inputs applied before it and the model's outputs and
 /// probes after it.
