@@ -42,6 +42,15 @@ inline int32_t sext(uint32_t v, int bits) {
 
 // V: a Verilated model; kTrace: built with --trace (the `…_tr` models of build.rs), else
 // trace_open fails.
+// The fields TMC429_READ_MOTOR(N) writes to p, compared with p (a bool).
+#define TMC429_SAME_MOTOR(N, p)                                                            \
+    ((t.probe_m##N##_x_target == p.x_target) & (t.probe_m##N##_x_actual == p.x_actual) &   \
+     (sext(t.probe_m##N##_v_internal, 20) == p.v_internal) &                               \
+     (sext(t.probe_m##N##_v_target, 12) == p.v_target) &                                   \
+     (sext(t.probe_m##N##_a_actual, 12) == p.a_actual) & (t.probe_m##N##_ustep == p.ustep) & \
+     (t.probe_m##N##_step == p.step) & (t.probe_m##N##_dir == p.dir) &                     \
+     (t.probe_m##N##_pulse_acc == p.pulse_acc))
+
 template <class V, bool kTrace>
 class RtlSimImpl final : public RtlSim {
 public:
@@ -68,6 +77,38 @@ public:
     }
 
     void tick(const RtlInputs &in, RtlOutputs &out, RtlProbes &pr) override {
+        edge(in);
+        peek(out, pr);
+    }
+
+    bool tick_check(const RtlInputs &in, const RtlOutputs &out, const RtlProbes &pr) override {
+        edge(in);
+        return same(out, pr);
+    }
+
+    // Whether peek would give exactly `out` and `pr`: every field peek writes, compared.
+    bool same(const RtlOutputs &out, const RtlProbes &pr) const {
+        const V &t = *top_;
+        bool s = (t.nint_sdo_c == out.nint_sdo_c) & (t.sdoz_c == out.sdoz_c) &
+                 (t.sdoz_c_oe == out.sdoz_c_oe) & (t.nscs_s == out.nscs_s) &
+                 (t.sck_s == out.sck_s) & (t.sdo_s == out.sdo_s) & (t.sdi_s_o == out.sdi_s_o) &
+                 (t.sdi_s_oe == out.sdi_s_oe) & (t.nscs2 == out.nscs2) &
+                 (t.nscs3 == out.nscs3) & (t.poscmp == out.poscmp);
+        s &= TMC429_SAME_MOTOR(0, pr.m0) & TMC429_SAME_MOTOR(1, pr.m1) & TMC429_SAME_MOTOR(2, pr.m2);
+        s &= (t.probe_chain_state == pr.chain.state) & (t.probe_chain_cell == pr.chain.cell) &
+             (t.probe_chain_motor == pr.chain.motor) &
+             (t.probe_chain_bit_count == pr.chain.bit_count) &
+             (t.probe_chain_pending == pr.chain.pending) &
+             (t.probe_chain_cover_waiting == pr.chain.cover_waiting) &
+             (t.probe_chain_readback == pr.chain.readback);
+        s &= (t.probe_prescaler == pr.prescaler) & (t.probe_power_down == pr.power_down) &
+             (t.probe_status == pr.status);
+        return s;
+    }
+
+private:
+    // One rising CLK edge with the inputs `in`.
+    void edge(const RtlInputs &in) {
         V &t = *top_;
         t.clk = 0;
         t.nscs_c = in.nscs_c;
@@ -100,8 +141,9 @@ public:
         if constexpr (kTrace) {
             if (tfp_) tfp_->dump(cycle_ * period_);
         }
-        peek(out, pr);
     }
+
+public:
 
     void peek(RtlOutputs &out, RtlProbes &pr) const override {
         const V &t = *top_;

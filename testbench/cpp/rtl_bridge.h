@@ -17,6 +17,9 @@ public:
     virtual ~RtlSim() {}
     // One rising CLK edge: inputs applied before it, outputs and probes after it.
     virtual void tick(const RtlInputs &in, RtlOutputs &out, RtlProbes &probes) = 0;
+    // One rising CLK edge, like tick, without copying out: whether the outputs and probes
+    // after it are exactly `out` and `probes` (what tick would have written).
+    virtual bool tick_check(const RtlInputs &in, const RtlOutputs &out, const RtlProbes &probes) = 0;
     // Outputs and probes of the current state, without a clock edge.
     virtual void peek(RtlOutputs &out, RtlProbes &probes) const = 0;
     // Starts Verilator's VCD trace of every RTL signal; time unit 1 ps, one CLK period

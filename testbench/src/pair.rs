@@ -4,9 +4,10 @@
 //! so the model side — stimulus, pin driver, golden model, coverage — can run ahead of the RTL.
 //! [`run_pair`] runs the model side on the calling thread and the Verilated RTL on a second
 //! thread; the model side hands over batches of [`Step`]s (the inputs of one edge and the
-//! model's outputs and probes after it) through a bounded channel, and the RTL side applies the
-//! same inputs and compares every cycle under the [`Compare`] mask, exactly as the single-thread
-//! loop does. It stops at the first disagreement and reports only its cycle: the caller makes
+//! model's outputs and probes after it, turned into the bridge's layout on the model side:
+//! [`Expected`]) through a bounded channel, and the RTL side applies the same inputs and compares
+//! every cycle under the [`Compare`] mask, exactly as the single-thread loop does (inside the
+//! bridge while the states are equal: [`Rtl::tick_agrees`]). It stops at the first disagreement and reports only its cycle: the caller makes
 //! the full report by running the single-thread loop again (the stimulus is seeded), so the
 //! report is the same whichever way the run was made.
 
@@ -14,7 +15,7 @@ use std::sync::mpsc::{sync_channel, TryRecvError};
 
 use tmc429_model::{Inputs, Outputs, Probes};
 
-use crate::rtl::{Rtl, Variant};
+use crate::rtl::{Expected, Rtl, Variant};
 use crate::signals::{agree, Compare};
 
 /// CLK cycles per batch handed from the model side to the RTL side.
@@ -46,9 +47,10 @@ pub fn run_pair<F>(variant: Variant, compare: Compare, reset: (Outputs, Probes),
 where
     F: FnMut(&mut Vec<Step>) -> bool,
 {
-    let (tx, rx) = sync_channel::<Vec<Step>>(DEPTH);
+    let (tx, rx) = sync_channel::<Vec<Expected>>(DEPTH);
     // emptied batches go back to the model side, so that no batch is allocated per round
-    let (back_tx, back_rx) = sync_channel::<Vec<Step>>(DEPTH + 2);
+    let (back_tx, back_rx) = sync_channel::<Vec<Expected>>(DEPTH + 2);
+    let mut steps = Vec::with_capacity(BATCH);
     std::thread::scope(|s| {
         let rtl_side = s.spawn(move || -> Result<Option<u64>, String> {
             let mut rtl = Rtl::try_new(variant)?;
@@ -57,10 +59,9 @@ where
             }
             let mut n = 0u64;
             for batch in rx {
-                for st in &batch {
+                for e in &batch {
                     n += 1;
-                    let ro = rtl.tick(&st.inp);
-                    if !agree(compare, &st.out, &st.probes, &ro, &rtl.probes()) {
+                    if !rtl.tick_agrees(e, compare) {
                         return Ok(Some(n));
                     }
                 }
@@ -74,7 +75,10 @@ where
                 Err(TryRecvError::Empty | TryRecvError::Disconnected) => Vec::with_capacity(BATCH),
             };
             buf.clear();
-            let more = fill(&mut buf);
+            steps.clear();
+            let more = fill(&mut steps);
+            // the bridge's layout is made here, on the model side's thread
+            buf.extend(steps.iter().map(|st| Expected::new(&st.inp, &st.out, &st.probes)));
             // a send fails when the RTL side has stopped (mismatch or error)
             if (!buf.is_empty() && tx.send(buf).is_err()) || !more {
                 break;

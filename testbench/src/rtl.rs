@@ -108,6 +108,7 @@ mod ffi {
 
         fn new_rtl(variant: u32, traced: bool) -> UniquePtr<RtlSim>;
         fn tick(self: Pin<&mut RtlSim>, inp: &RtlInputs, out: &mut RtlOutputs, probes: &mut RtlProbes);
+        fn tick_check(self: Pin<&mut RtlSim>, inp: &RtlInputs, out: &RtlOutputs, probes: &RtlProbes) -> bool;
         fn peek(self: &RtlSim, out: &mut RtlOutputs, probes: &mut RtlProbes);
         fn trace_open(self: Pin<&mut RtlSim>, path: &str, period_ps: u64) -> bool;
         fn trace_close(self: Pin<&mut RtlSim>);
@@ -147,6 +148,139 @@ impl fmt::Display for Variant {
             Variant::Chip(c) => write!(f, "{c}"),
             Variant::PlantedStatusBug => f.write_str("tmc429+PLANT_BUG_STATUS"),
         }
+    }
+}
+
+/// One edge's inputs and the state expected after it (the model's outputs and probes), in the
+/// bridge's layout: [`Rtl::tick_agrees`] compares the RTL with it inside the bridge, without
+/// copying the RTL's state out. Made on the model side of the two-thread pair (crate::pair).
+#[cfg(not(tmc429_no_rtl))]
+#[derive(Clone, Copy, Debug)]
+pub struct Expected {
+    inp: ffi::RtlInputs,
+    out: ffi::RtlOutputs,
+    probes: ffi::RtlProbes,
+}
+
+#[cfg(not(tmc429_no_rtl))]
+impl Expected {
+    pub fn new(i: &Inputs, o: &Outputs, p: &Probes) -> Expected {
+        let m = |x: &MotorProbe| ffi::RtlMotorProbe {
+            x_target: x.x_target,
+            x_actual: x.x_actual,
+            v_internal: x.v_internal,
+            v_target: x.v_target,
+            a_actual: x.a_actual,
+            ustep: x.ustep,
+            step: x.step,
+            dir: x.dir,
+            pulse_acc: x.pulse_acc,
+        };
+        let c = &p.chain;
+        Expected {
+            inp: rtl_inputs(i),
+            out: ffi::RtlOutputs {
+                nint_sdo_c: o.nint_sdo_c,
+                sdoz_c: o.sdoz_c,
+                sdoz_c_oe: o.sdoz_c_oe,
+                nscs_s: o.nscs_s,
+                sck_s: o.sck_s,
+                sdo_s: o.sdo_s,
+                sdi_s_o: o.sdi_s_o,
+                sdi_s_oe: o.sdi_s_oe,
+                nscs2: o.nscs2,
+                nscs3: o.nscs3,
+                poscmp: o.poscmp,
+            },
+            probes: ffi::RtlProbes {
+                m0: m(&p.motor[0]),
+                m1: m(&p.motor[1]),
+                m2: m(&p.motor[2]),
+                chain: ffi::RtlChainProbe {
+                    state: c.state,
+                    cell: c.cell,
+                    motor: c.motor,
+                    bit_count: c.bit_count,
+                    pending: c.pending,
+                    cover_waiting: c.cover_waiting,
+                    readback: c.readback,
+                },
+                prescaler: p.prescaler,
+                power_down: p.power_down,
+                status: p.status,
+            },
+        }
+    }
+
+    /// The expected outputs and probes, back in the model's types.
+    pub fn model(&self) -> (Outputs, Probes) {
+        (outputs(&self.out), probes(&self.probes))
+    }
+}
+
+#[cfg(not(tmc429_no_rtl))]
+#[inline]
+fn rtl_inputs(i: &Inputs) -> ffi::RtlInputs {
+    ffi::RtlInputs {
+        nscs_c: i.nscs_c,
+        sck_c: i.sck_c,
+        sdi_c: i.sdi_c,
+        sdi_s: i.sdi_s,
+        ref1: i.ref1,
+        ref2: i.ref2,
+        ref3: i.ref3,
+        refr1: i.refr1,
+        refr2: i.refr2,
+        refr3: i.refr3,
+    }
+}
+
+#[cfg(not(tmc429_no_rtl))]
+#[inline]
+fn outputs(o: &ffi::RtlOutputs) -> Outputs {
+    Outputs {
+        nint_sdo_c: o.nint_sdo_c,
+        sdoz_c: o.sdoz_c,
+        sdoz_c_oe: o.sdoz_c_oe,
+        nscs_s: o.nscs_s,
+        sck_s: o.sck_s,
+        sdo_s: o.sdo_s,
+        sdi_s_o: o.sdi_s_o,
+        sdi_s_oe: o.sdi_s_oe,
+        nscs2: o.nscs2,
+        nscs3: o.nscs3,
+        poscmp: o.poscmp,
+    }
+}
+
+#[cfg(not(tmc429_no_rtl))]
+#[inline]
+fn probes(p: &ffi::RtlProbes) -> Probes {
+    let m = |x: &ffi::RtlMotorProbe| MotorProbe {
+        x_target: x.x_target,
+        x_actual: x.x_actual,
+        v_internal: x.v_internal,
+        v_target: x.v_target,
+        a_actual: x.a_actual,
+        ustep: x.ustep,
+        step: x.step,
+        dir: x.dir,
+        pulse_acc: x.pulse_acc,
+    };
+    Probes {
+        motor: [m(&p.m0), m(&p.m1), m(&p.m2)],
+        chain: ChainProbe {
+            state: p.chain.state,
+            cell: p.chain.cell,
+            motor: p.chain.motor,
+            bit_count: p.chain.bit_count,
+            pending: p.chain.pending,
+            cover_waiting: p.chain.cover_waiting,
+            readback: p.chain.readback,
+        },
+        prescaler: p.prescaler,
+        power_down: p.power_down,
+        status: p.status,
     }
 }
 
@@ -209,20 +343,26 @@ impl Rtl {
     /// One rising CLK edge.
     #[inline]
     pub fn tick(&mut self, i: &Inputs) -> Outputs {
-        self.inp = ffi::RtlInputs {
-            nscs_c: i.nscs_c,
-            sck_c: i.sck_c,
-            sdi_c: i.sdi_c,
-            sdi_s: i.sdi_s,
-            ref1: i.ref1,
-            ref2: i.ref2,
-            ref3: i.ref3,
-            refr1: i.refr1,
-            refr2: i.refr2,
-            refr3: i.refr3,
-        };
+        self.inp = rtl_inputs(i);
         self.sim.pin_mut().tick(&self.inp, &mut self.out, &mut self.probes);
         self.outputs()
+    }
+
+    /// One rising CLK edge with the inputs of `e`, and whether the RTL's outputs and probes after
+    /// it agree with `e`'s under `compare` — the same answer as [`tick`](Rtl::tick) followed by
+    /// [`signals::agree`](crate::signals::agree), found inside the bridge while they are equal.
+    #[inline]
+    pub fn tick_agrees(&mut self, e: &Expected, compare: crate::signals::Compare) -> bool {
+        self.inp = e.inp;
+        if self.sim.pin_mut().tick_check(&e.inp, &e.out, &e.probes) {
+            // equal to what tick would have copied out
+            self.out = e.out;
+            self.probes = e.probes;
+            return true;
+        }
+        self.sim.peek(&mut self.out, &mut self.probes);
+        let (mo, mp) = e.model();
+        crate::signals::agree(compare, &mo, &mp, &self.outputs(), &self.probes())
     }
 
     /// Number of ticks since reset.
@@ -254,52 +394,13 @@ impl Rtl {
     /// Output pins after the last tick.
     #[inline]
     pub fn outputs(&self) -> Outputs {
-        let o = &self.out;
-        Outputs {
-            nint_sdo_c: o.nint_sdo_c,
-            sdoz_c: o.sdoz_c,
-            sdoz_c_oe: o.sdoz_c_oe,
-            nscs_s: o.nscs_s,
-            sck_s: o.sck_s,
-            sdo_s: o.sdo_s,
-            sdi_s_o: o.sdi_s_o,
-            sdi_s_oe: o.sdi_s_oe,
-            nscs2: o.nscs2,
-            nscs3: o.nscs3,
-            poscmp: o.poscmp,
-        }
+        outputs(&self.out)
     }
 
     /// Probe bundle after the last tick.
     #[inline]
     pub fn probes(&self) -> Probes {
-        let p = &self.probes;
-        let m = |x: &ffi::RtlMotorProbe| MotorProbe {
-            x_target: x.x_target,
-            x_actual: x.x_actual,
-            v_internal: x.v_internal,
-            v_target: x.v_target,
-            a_actual: x.a_actual,
-            ustep: x.ustep,
-            step: x.step,
-            dir: x.dir,
-            pulse_acc: x.pulse_acc,
-        };
-        Probes {
-            motor: [m(&p.m0), m(&p.m1), m(&p.m2)],
-            chain: ChainProbe {
-                state: p.chain.state,
-                cell: p.chain.cell,
-                motor: p.chain.motor,
-                bit_count: p.chain.bit_count,
-                pending: p.chain.pending,
-                cover_waiting: p.chain.cover_waiting,
-                readback: p.chain.readback,
-            },
-            prescaler: p.prescaler,
-            power_down: p.power_down,
-            status: p.status,
-        }
+        probes(&self.probes)
     }
 
     /// Starts Verilator's VCD trace of every RTL signal from the next tick on (only on a model
@@ -322,6 +423,25 @@ impl Rtl {
 
     pub fn trace_close(&mut self) {
         self.sim.pin_mut().trace_close();
+    }
+}
+
+/// Without Verilator: the inputs and the expected state, kept as they are (nothing compares them).
+#[cfg(tmc429_no_rtl)]
+#[derive(Clone, Copy, Debug)]
+pub struct Expected {
+    out: Outputs,
+    probes: Probes,
+}
+
+#[cfg(tmc429_no_rtl)]
+impl Expected {
+    pub fn new(_i: &Inputs, o: &Outputs, p: &Probes) -> Expected {
+        Expected { out: *o, probes: *p }
+    }
+
+    pub fn model(&self) -> (Outputs, Probes) {
+        (self.out, self.probes)
     }
 }
 
@@ -357,6 +477,10 @@ impl Rtl {
     }
 
     pub fn tick(&mut self, _i: &Inputs) -> Outputs {
+        match self.never {}
+    }
+
+    pub fn tick_agrees(&mut self, _e: &Expected, _compare: crate::signals::Compare) -> bool {
         match self.never {}
     }
 
