@@ -81,7 +81,6 @@ module tmc429_regfile #(
     reg        cw;             // cover datagram waiting
     reg [5:0]  cover_pos;
     reg [4:0]  cover_len;
-    reg [23:0] cover_datagram;
     reg [8:0]  if_conf;        // en_refr, pos_comp_sel[1:0], en_sd, inv_dir, inv_stp, step_half, sdo_int, inv_ref
     reg [23:0] pos_comp;
     reg        pc_i, pc_m, pc_hist;
@@ -212,12 +211,24 @@ module tmc429_regfile #(
     assign drv_dgw       = dw;
     assign drv_cover_pos = cover_pos;
     assign drv_cover_len = cover_len;
-    assign drv_cover_datagram = cover_datagram;
+    // cover_datagram (C85) is used only by the chain's start edge, which copies it: it lives
+    // in a one-word RAM, read every edge. In the edge after a write the RAM output is not yet
+    // the new word; the datagram is still in the SPI input register then (no frame can
+    // follow within one edge), so that edge takes it from there.
+    reg         cov_late;
+    wire [23:0] cov_q;
+    wire        cov_wq;
+    wire        w_cover = wr_g & HAS_CHAIN & (jdx == 4'd3);
+    tmc429_wram #(.AW(1), .DW(24), .WMASK(2'b01)) u_cover (
+        .clk(clk), .rst(rst),
+        .we(w_cover), .waddr(1'b0), .wdata(wdata),
+        .re(1'b1), .raddr(1'b0), .q(cov_q), .wq(cov_wq));
+    assign drv_cover_datagram = cov_late ? wdata : (cov_wq ? cov_q : 24'd0);
 
     always @(posedge clk) begin
         if (rst) begin
             dw <= 1'b0;  cw <= 1'b0;
-            cover_pos <= 6'd0;  cover_len <= 5'd0;  cover_datagram <= 24'd0;
+            cover_pos <= 6'd0;  cover_len <= 5'd0;  cov_late <= 1'b0;
             if_conf <= 9'd0;  pos_comp <= 24'd0;
             pc_i <= 1'b0;  pc_m <= 1'b0;  pc_hist <= HAS_429;   // match holds at reset
             gp_low <= 8'd0;  clk2_div <= 8'd15;
@@ -228,6 +239,7 @@ module tmc429_regfile #(
             poscmp_q <= HAS_429;
         end else begin
             nint_q   <= ~int_o;
+            cov_late <= w_cover;
             poscmp_q <= pc_match;
             if (run) begin
                 prescaler <= prescaler + 20'd1;
@@ -252,10 +264,7 @@ module tmc429_regfile #(
                           cover_pos <= wdata[13:8];
                           cover_len <= wdata[4:0];
                       end
-                4'd3: if (HAS_CHAIN) begin
-                          cover_datagram <= wdata;
-                          cw <= 1'b1;
-                      end
+                4'd3: if (HAS_CHAIN) cw <= 1'b1;    // the datagram: u_cover
                 4'd4: if (HAS_429) if_conf <= wdata[8:0];
                 4'd5: if (HAS_429) pos_comp <= wdata;
                 4'd8: pd <= 1'b1;

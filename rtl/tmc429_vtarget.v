@@ -13,8 +13,10 @@
 //                 four bits per cycle shifted out of acc
 //   p = 7m+14     C: clamp to [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign, result
 //                 into vt_next[m]
-//   p = 29        commit: vt[m] := vt_next[m] for all motors (vt is used from phase 30 on)
-// Motor 2's result is written at p = 28. Stages A, B and C work on three motors at once
+//   p = 29        commit: vt[m] := vt_next[m] for all motors (vt is used from phase 30 on);
+//                 motor 2's result is still the output of C at p = 29 (B and C hold after
+//                 p = 27), so it is committed from there and needs no vt_next register
+// Motor 2's result is ready at p = 28 and committed from C at p = 29. Stages A, B and C work on three motors at once
 // (A on m+1 while B runs m): each stage reads the other's registers from the old state.
 //
 // Square root without a multiplier-wide shifter: with t = pdiv >> 1, e = pdiv & 1 and
@@ -56,11 +58,12 @@ module tmc429_vtarget #(
 );
     // ---- schedule --------------------------------------------------------------------
     reg        a_snap, a_c, a_mul, b_load, b_run, c_out, commit;
-    reg [1:0]  a_m, c_m;
+    reg [1:0]  a_m;
+    reg        c_m;                // motor of C's result: 0 or 1 (motor 2: committed from C)
     reg [2:0]  b_k;               // B cycle index 0..6
     always @(*) begin
         a_snap = 1'b0; a_c = 1'b0; a_mul = 1'b0; b_load = 1'b0; b_run = 1'b0; c_out = 1'b0;
-        commit = 1'b0; a_m = 2'd0; c_m = 2'd0; b_k = 3'd0;
+        commit = 1'b0; a_m = 2'd0; c_m = 1'b0; b_k = 3'd0;
         case (phase)
         5'd0:  begin a_snap = 1'b1; a_m = 2'd0; end
         5'd7:  begin a_snap = 1'b1; a_m = 2'd1; end
@@ -81,9 +84,8 @@ module tmc429_vtarget #(
         default: ;
         endcase
         case (phase)
-        5'd14: begin c_out = 1'b1; c_m = 2'd0; end
-        5'd21: begin c_out = 1'b1; c_m = 2'd1; end
-        5'd28: begin c_out = 1'b1; c_m = 2'd2; end
+        5'd14: begin c_out = 1'b1; c_m = 1'b0; end
+        5'd21: begin c_out = 1'b1; c_m = 1'b1; end
         5'd29: commit = 1'b1;
         default: ;
         endcase
@@ -276,22 +278,22 @@ module tmc429_vtarget #(
         sm2c = sm[11] ? (12'd0 - {1'b0, sm[10:0]}) : {1'b0, sm[10:0]};
     endfunction
 
-    reg [35:0] vt_next;           // motor m in [12m+11:12m], sign and magnitude
+    reg [23:0] vt_next;           // motor m (0, 1) in [12m+11:12m], sign and magnitude
     reg [35:0] vt_r;
     wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
     always @(posedge clk) begin
         if (rst) begin
-            vt_next <= 36'd0;
+            vt_next <= 24'd0;
             vt_r <= 36'd0;
         end else if (run) begin
-            if (c_out)
-                case (c_m)
-                2'd0:    vt_next[11:0] <= res;
-                2'd1:    vt_next[23:12] <= res;
-                default: vt_next[35:24] <= res;
-                endcase
+            if (c_out) begin
+                if (c_m)
+                    vt_next[23:12] <= res;
+                else
+                    vt_next[11:0] <= res;
+            end
             if (commit)
-                vt_r <= {sm2c(vt_next[35:24]), sm2c(vt_next[23:12]), sm2c(vt_next[11:0])}
+                vt_r <= {sm2c(res), sm2c(vt_next[23:12]), sm2c(vt_next[11:0])}
                         & present;
         end
     end
