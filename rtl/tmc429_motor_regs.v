@@ -31,7 +31,6 @@ module tmc429_motor_regs #(
     // registers for the target velocity unit and the frame schedule
     output reg  [23:0] x_target,
     output reg  [1:0]  rm,
-    output reg  [10:0] v_min,
     output reg  [3:0]  pulse_div,
     output reg  [3:0]  ramp_div,
     // motion state (probes)
@@ -46,7 +45,7 @@ module tmc429_motor_regs #(
     // driver side (C75): {is_agtat, is_aleat, is_v0, a_threshold}
     output wire [19:0] drv_conf
 );
-    reg [10:0] a_max, a_threshold;
+    reg [10:0] v_min, a_max, a_threshold;
     reg [2:0]  is_agtat, is_aleat, is_v0, usrs;
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
@@ -54,7 +53,9 @@ module tmc429_motor_regs #(
     reg [12:0] tol_k;          // 4096 - dx_ref_tolerance, for the tolerance window's speed
     wire       lp, stop, tol_ok;
     wire [23:0] x_latched;
-    wire [11:0] v_actual;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [11:0] v_actual;     // formed once for all motors in the read path (tmc429_regfile)
+    /* verilator lint_on UNUSEDSIGNAL */
 
     localparam HAS_IDX8  = (CHIP != 2);   // TMC4210: no current scaling register
     localparam HAS_IDX15 = (CHIP != 0);   // TMC428: IDX 15 unused
@@ -143,7 +144,9 @@ module tmc429_motor_regs #(
         case (ridx)
         4'd1:  rdata = x_actual;
         4'd4:  rdata = {12'd0, v_target};
-        4'd5:  rdata = {12'd0, v_actual};
+        // v_actual = V >> 8 rounded toward 0 (C42): V[19:8] and the rounding carry (V < 0
+        // with a nonzero fraction) in bit 12; the register file adds them after the motor mux
+        4'd5:  rdata = {11'd0, v[19] & (v[7:0] != 8'd0), v[19:8]};
         4'd7:  rdata = {12'd0, a_actual};
         4'd10: rdata = {7'd0, lp, 16'd0};
         4'd11: rdata = {16'd0, int_flags};

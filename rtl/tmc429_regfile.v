@@ -129,7 +129,6 @@ module tmc429_regfile #(
     localparam  NMOT = (CHIP == 2) ? 1 : 3;
 
     wire [5:0]  m_rm;
-    wire [32:0] m_vmin;
     wire [11:0] m_pulse_div, m_ramp_div;
     wire [35:0] m_vt;
     wire [2:0]  ramp_tick;
@@ -150,7 +149,6 @@ module tmc429_regfile #(
                 .vt(m_vt[12*g+11:12*g]),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
-                .v_min(m_vmin[11*g+10:11*g]),
                 .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
                 .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]),
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
@@ -164,7 +162,7 @@ module tmc429_regfile #(
     tmc429_vtarget #(.NMOT(NMOT)) u_vt (
         .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
         .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
-        .v_min(m_vmin), .v_target(p_v_target),
+        .v_target(p_v_target),
         .cfg_we(wr & ~a7[6] & (a7[5:4] != 2'd3) & ((a7[5:4] == 2'd0) | m_present1)),
         .cfg_m(a7[5:4]), .cfg_idx(jdx), .cfg_data(wdata[14:0]),
         .vt(m_vt));
@@ -390,11 +388,16 @@ module tmc429_regfile #(
             endcase
         end
     end
+    // IDX 5 (v_actual): the motor's read data carries V[19:8] and the rounding carry in bit
+    // 12 (tmc429_motor_regs); one incrementer serves the three motors
+    wire        rd_va  = (rd_addr[5:4] != 2'd3) & (rd_addr[3:0] == 4'd5);
+    wire        va_c   = rd_va & st_data[12];
+    wire [23:0] st_va  = {st_data[23:13], st_data[12] & ~rd_va, st_data[11:0] + {11'd0, va_c}};
     always @(*) begin
         if (rd_addr[6])
             rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
         else
-            rd_data = st_data | sh_data;
+            rd_data = st_va | sh_data;
     end
 endmodule
 

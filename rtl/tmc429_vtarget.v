@@ -4,7 +4,7 @@
 // Schedule inside the 32-cycle frame (phase p = prescaler[4:0], C41):
 //   p = 7m        snapshot of motor m: dx = x_target - x_actual, rm, pmul, pdiv, v_min,
 //                 v_max, v_target are taken from the old state into the A registers
-//                 (v_max, pmul and pdiv: the synchronous read of the parameter RAM, whose
+//                 (v_min, v_max, pmul and pdiv: the synchronous read of the parameter RAMs, whose
 //                 output register is their snapshot)
 //   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE)
 //   p = 7m+2..+6  acc = c * W, W = p_mul << u (10-bit multiplier word, Horner, 2 bits per cycle)
@@ -28,7 +28,8 @@
 // (c * p_mul * 2^u) out four bits per cycle; u and "odd" align the last bit with 3 + pdiv.
 //
 // v_max (IDX 3) and p_mul/pdiv (IDX 9) are read by nothing but the snapshot, so they have no
-// flip-flops: the µC writes them into two parameter RAMs (tmc429_wram, one word per motor)
+// flip-flops, and v_min (IDX 2) has a copy for the snapshot: the µC writes them into three
+// parameter RAMs (tmc429_wram, one word per motor)
 // and the snapshot edge reads the word of motor m. A write in a snapshot edge is written one
 // edge later, so the snapshot gives the old value, as the register did (C3); a word not
 // written since reset reads 0 (C2).
@@ -45,9 +46,8 @@ module tmc429_vtarget #(
     input  wire [5:0]  rm,
     input  wire [71:0] x_target,
     input  wire [71:0] x_actual,
-    input  wire [32:0] v_min,
     input  wire [35:0] v_target,
-    // µC write to motor cfg_m's register cfg_idx (IDX 3: v_max; IDX 9: pmul, pdiv, C22);
+    // µC write to motor cfg_m's register cfg_idx (IDX 2: v_min; 3: v_max; 9: pmul, pdiv, C22);
     // cfg_m, cfg_idx and cfg_data still hold in the edge after cfg_we
     input  wire        cfg_we,
     input  wire [1:0]  cfg_m,
@@ -94,26 +94,25 @@ module tmc429_vtarget #(
     // ---- A: snapshot, c, multiply ------------------------------------------------------
     reg [23:0] sx_t, sx_a;
     reg [1:0]  s_rm;
-    reg [10:0] s_vmin;
     reg [11:0] s_vtg;
     always @(*) begin
         case (a_m)
         2'd1: begin
             sx_t = x_target[47:24]; sx_a = x_actual[47:24]; s_rm = rm[3:2];
-            s_vmin = v_min[21:11]; s_vtg = v_target[23:12];
+            s_vtg = v_target[23:12];
         end
         2'd2: begin
             sx_t = x_target[71:48]; sx_a = x_actual[71:48]; s_rm = rm[5:4];
-            s_vmin = v_min[32:22]; s_vtg = v_target[35:24];
+            s_vtg = v_target[35:24];
         end
         default: begin
             sx_t = x_target[23:0]; sx_a = x_actual[23:0]; s_rm = rm[1:0];
-            s_vmin = v_min[10:0]; s_vtg = v_target[11:0];
+            s_vtg = v_target[11:0];
         end
         endcase
     end
 
-    // parameter RAMs: the read at the snapshot edge is the snapshot of v_max, pmul, pdiv.
+    // parameter RAMs: the read at the snapshot edge is the snapshot of v_min, v_max, pmul, pdiv.
     // A write in a snapshot edge is deferred by one edge (the snapshot takes the old value,
     // C3; the next snapshot is 7 edges later): `cfg_*` still hold the datagram in the next
     // edge (the SPI input register stays until the next frame), so only the write enable is
@@ -137,13 +136,19 @@ module tmc429_vtarget #(
         .clk(clk), .rst(rst),
         .we(cfg_wr & (cfg_idx == 4'd9)), .waddr(cfg_m), .wdata({cfg_data[14:8], cfg_data[3:0]}),
         .re(snap_re), .raddr(a_m), .q(q_pd), .wq(wq_pd));
+    wire [10:0] q_vmin;
+    wire        wq_vmin;
+    tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_vmin (
+        .clk(clk), .rst(rst),
+        .we(cfg_wr & (cfg_idx == 4'd2)), .waddr(cfg_m), .wdata(cfg_data[10:0]),
+        .re(snap_re), .raddr(a_m), .q(q_vmin), .wq(wq_vmin));
+    wire [10:0] a_vmin = wq_vmin ? q_vmin : 11'd0;
     wire [10:0] a_vmax = wq_vmax ? q_vmax : 11'd0;
     wire [6:0]  a_pmul = wq_pd ? q_pd[10:4] : 7'd0;
     wire [3:0]  a_pdiv = wq_pd ? q_pd[3:0] : 4'd0;
 
     reg [23:0] a_dx;
     reg [1:0]  a_rm;
-    reg [10:0] a_vmin;
     reg [11:0] a_vtg;
     reg        a_sgn, a_zero;
     reg [18:0] a_cv;              // c
@@ -167,13 +172,13 @@ module tmc429_vtarget #(
     always @(posedge clk) begin
         if (rst) begin
             a_dx <= 24'd0; a_rm <= 2'd0;
-            a_vmin <= 11'd0; a_vtg <= 12'd0;
+            a_vtg <= 12'd0;
             a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 19'd0; a_w <= 10'd0; acc <= 29'd0;
         end else if (run) begin
             if (a_snap) begin
                 a_dx <= sx_t - sx_a;     // C43: 24-bit wrap-around
                 a_rm <= s_rm;
-                a_vmin <= s_vmin; a_vtg <= s_vtg;
+                a_vtg <= s_vtg;
             end
             if (a_c) begin
                 a_sgn  <= dx_neg;
