@@ -4,7 +4,10 @@
 //
 // The motion state (x_actual, V, v_target, a_actual, ustep_count, x_latched, lp) lives in
 // tmc429_ramp, which also takes the µC writes to it; this block holds the configuration
-// registers, the read mux and the interrupt conditions, events and flags.
+// registers the motion core uses every cycle, the read mux of the state and the interrupt
+// conditions, events and flags. The read value of a register that only the µC writes comes
+// from the register file's shadow RAM (tmc429_regfile); v_max, p_mul and pdiv, which only
+// the target velocity unit reads, live in its parameter RAM alone (tmc429_vtarget).
 `default_nettype none
 
 module tmc429_motor_regs #(
@@ -28,10 +31,6 @@ module tmc429_motor_regs #(
     // registers for the target velocity unit and the frame schedule
     output reg  [23:0] x_target,
     output reg  [1:0]  rm,
-    output reg  [10:0] v_min,
-    output reg  [10:0] v_max,
-    output reg  [6:0]  pmul,
-    output reg  [3:0]  pdiv,
     output reg  [3:0]  pulse_div,
     output reg  [3:0]  ramp_div,
     // motion state (probes)
@@ -46,7 +45,7 @@ module tmc429_motor_regs #(
     // driver side (C75): {is_agtat, is_aleat, is_v0, a_threshold}
     output wire [19:0] drv_conf
 );
-    reg [10:0] a_max, a_threshold;
+    reg [10:0] v_min, a_max, a_threshold;
     reg [2:0]  is_agtat, is_aleat, is_v0, usrs;
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
@@ -54,7 +53,9 @@ module tmc429_motor_regs #(
     reg [12:0] tol_k;          // 4096 - dx_ref_tolerance, for the tolerance window's speed
     wire       lp, stop, tol_ok;
     wire [23:0] x_latched;
-    wire [11:0] v_actual;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [11:0] v_actual;     // formed once for all motors in the read path (tmc429_regfile)
+    /* verilator lint_on UNUSEDSIGNAL */
 
     localparam HAS_IDX8  = (CHIP != 2);   // TMC4210: no current scaling register
     localparam HAS_IDX15 = (CHIP != 0);   // TMC428: IDX 15 unused
@@ -94,10 +95,9 @@ module tmc429_motor_regs #(
     always @(posedge clk) begin
         if (rst) begin
             x_target <= 24'd0;
-            v_min <= 11'd0;     v_max <= 11'd0;
+            v_min <= 11'd0;
             a_max <= 11'd0;
             is_agtat <= 3'd0;   is_aleat <= 3'd0;  is_v0 <= 3'd0;  a_threshold <= 11'd0;
-            pmul <= 7'd0;       pdiv <= 4'd0;
             ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
             int_hist <= 8'b0011_0101;   // the conditions of the reset state: no event at power-on
@@ -113,7 +113,6 @@ module tmc429_motor_regs #(
                 case (widx)
                 4'd0:  x_target <= wdata;
                 4'd2:  v_min <= wdata[10:0];
-                4'd3:  v_max <= wdata[10:0];
                 4'd6:  a_max <= wdata[10:0];
                 4'd8:  if (HAS_IDX8) begin
                            is_agtat <= wdata[22:20];
@@ -121,7 +120,6 @@ module tmc429_motor_regs #(
                            is_v0 <= wdata[14:12];
                            a_threshold <= wdata[10:0];
                        end
-                4'd9:  begin pmul <= wdata[14:8]; pdiv <= wdata[3:0]; end
                 4'd10: begin ref_conf <= wdata[11:8]; rm <= wdata[1:0]; end
                 4'd12: begin
                            pulse_div <= wdata[15:12];
@@ -132,33 +130,29 @@ module tmc429_motor_regs #(
                            dx_ref_tolerance <= wdata[11:0];
                            tol_k <= 13'd4096 - {1'b0, wdata[11:0]};
                        end
-                // IDX 1, 4, 5, 14, 15: motion state in tmc429_ramp; IDX 7 (a_actual) and
-                // 11 (above): no storage here
+                // IDX 1, 4, 5, 14, 15: motion state in tmc429_ramp; IDX 3, 9: parameter
+                // RAM of tmc429_vtarget; IDX 7 (a_actual) and 11 (above): no storage here
                 default: ;
                 endcase
             end
         end
     end
 
+    // read value of the state (C21-C27); the bits a µC write sets come from the shadow RAM
+    // of the register file and are 0 here (IDX 10: lp only; IDX 11: int_flags only)
     always @(*) begin
         case (ridx)
-        4'd0:  rdata = x_target;
         4'd1:  rdata = x_actual;
-        4'd2:  rdata = {13'd0, v_min};
-        4'd3:  rdata = {13'd0, v_max};
         4'd4:  rdata = {12'd0, v_target};
-        4'd5:  rdata = {12'd0, v_actual};
-        4'd6:  rdata = {13'd0, a_max};
+        // v_actual = V >> 8 rounded toward 0 (C42): V[19:8] and the rounding carry (V < 0
+        // with a nonzero fraction) in bit 12; the register file adds them after the motor mux
+        4'd5:  rdata = {11'd0, v[19] & (v[7:0] != 8'd0), v[19:8]};
         4'd7:  rdata = {12'd0, a_actual};
-        4'd8:  rdata = HAS_IDX8 ? {1'b0, is_agtat, 1'b0, is_aleat, 1'b0, is_v0, 1'b0, a_threshold}
-                                : 24'd0;
-        4'd9:  rdata = {8'd0, 1'b1, pmul, 4'd0, pdiv};     // C22: bit 15 reads 1
-        4'd10: rdata = {7'd0, lp, 4'd0, ref_conf, 6'd0, rm};
-        4'd11: rdata = {8'd0, int_mask, int_flags};
-        4'd12: rdata = {8'd0, pulse_div, ramp_div, 5'd0, usrs};
-        4'd13: rdata = {12'd0, dx_ref_tolerance};
+        4'd10: rdata = {7'd0, lp, 16'd0};
+        4'd11: rdata = {16'd0, int_flags};
         4'd14: rdata = x_latched;
-        default: rdata = HAS_IDX15 ? {16'd0, ustep} : 24'd0;
+        4'd15: rdata = HAS_IDX15 ? {16'd0, ustep} : 24'd0;
+        default: rdata = 24'd0;
         endcase
     end
 endmodule

@@ -3,12 +3,21 @@
 //
 // Organised as 64 words of two cells: word w holds cell 2w in bits 5..0 and cell 2w+1 in
 // bits 11..6, as a RAM datagram addresses them (TMC428 Table 10-1). The array has no reset
-// (it maps to a RAM). The power-on contents come from a ROM: a resettable flag per word
-// says whether the word was written since reset; until then a read returns the ROM value.
-// Two read ports on the same array (an FPGA maps it as two RAM copies written together):
-// port 1 (µC reads) is combinational on its address; port 2 (driver chain, C80) addresses
-// one 6-bit cell and is synchronous with a read enable: `rdata2` is the cell as it was
-// before the last edge with `re2` (a write in that edge is not seen).
+// (it maps to a RAM). The power-on contents come from a ROM (C30): in the 65 edges after
+// reset a sweep copies the ROM into the array, one word per edge (the ROM read one edge
+// ahead of the write), and until a word is copied a read of it returns the ROM value. No µC
+// write can meet the sweep: a frame needs the synchronized nSCS_C falling edge (3 edges after
+// reset at the earliest) and 32 rising SCK_C edges at least 2 edges apart before it executes
+// (C4, C10, C12), i.e. not before the 67th edge; the sweep's last write is at the 65th.
+// Two read ports, each on its own copy of the array (two block RAMs written together):
+// port 1 (µC reads) is synchronous and reads every edge: `rdata` is the word at `raddr` as
+// it was before the last edge. Its user (the SPI read, tmc429_regfile) presents the address
+// at least one edge before it takes the data and never takes a word read in the edge of a
+// write (no µC write executes inside a frame), so this copy needs no read/write collision
+// logic (no_rw_check). Port 2 (driver chain, C80) addresses one 6-bit cell and is
+// synchronous with a read enable: `rdata2` is the cell as it was before the last edge with
+// `re2` (a write in that edge is not seen). The ROM is a case table read synchronously, so
+// it maps to block RAM as well (rom_style).
 // ROM (CHIP = 1, TMC429): cells 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD
 // positions (TMC429 §11.4.2), cells 36..63 = 0, cells 64..127 = the sine table of TMC428
 // Table 12-2, y(i) = min(63, int(1/2 + 64 sin(pi i / 128))). CHIP = 0, 2: all 0.
@@ -22,31 +31,57 @@ module tmc429_ram #(
     input  wire        we,
     input  wire [5:0]  waddr,
     input  wire [11:0] wdata,
-    input  wire [5:0]  raddr,
+    input  wire [5:0]  raddr,      // port 1: read every edge
     output wire [11:0] rdata,
     input  wire        re2,
     input  wire [6:0]  raddr2,     // cell 0..127
     output wire [5:0]  rdata2
 );
-    reg [11:0] mem [0:63];
-    reg [63:0] written;
+    (* ram_style = "block", no_rw_check *)
+    reg [11:0] mem1 [0:63];        // copy for port 1
+    (* ram_style = "block" *)
+    reg [11:0] mem [0:63];         // copy for port 2
 
+    // ---- power-on sweep ---------------------------------------------------------------
+    reg  [6:0]  sw_c;       // next ROM word to read; 64: all read
+    reg         sw_v;       // this edge writes rom_q to word sw_a
+    reg  [5:0]  sw_a;
+    reg  [11:0] rom_q;
     always @(posedge clk) begin
-        if (we)
-            mem[waddr] <= wdata;
+        rom_q <= (CHIP == 1) ? rom_word(sw_c[5:0]) : 12'h000;
+        sw_a  <= sw_c[5:0];
     end
-
     always @(posedge clk) begin
-        if (rst)
-            written <= 64'd0;
-        else if (we)
-            written[waddr] <= 1'b1;
+        if (rst) begin
+            sw_c <= 7'd0;
+            sw_v <= 1'b0;
+        end else begin
+            if (!sw_c[6])
+                sw_c <= sw_c + 7'd1;
+            sw_v <= ~sw_c[6];
+        end
+    end
+    // word w holds its contents: the sweep is done, or it copies a word above w now
+    function valid;
+        input [5:0] w;
+        valid = sw_v ? (w < sw_a) : sw_c[6];
+    endfunction
+
+    wire        wr_e = sw_v | we;
+    wire [5:0]  wr_a = sw_v ? sw_a : waddr;
+    wire [11:0] wr_d = sw_v ? rom_q : wdata;
+    always @(posedge clk) begin
+        if (wr_e) begin
+            mem1[wr_a] <= wr_d;
+            mem[wr_a] <= wr_d;
+        end
     end
 
     // Power-on contents of word a (C30): TMC429 only, zero otherwise.
     function [11:0] rom_word;
         input [5:0] a;
         begin
+            (* rom_style = "block" *)
             case (a)
             6'd0: rom_word = 12'h151;
             6'd1: rom_word = 12'h0C4;
@@ -103,8 +138,20 @@ module tmc429_ram #(
         end
     endfunction
 
-    wire [11:0] rom = (CHIP == 1) ? rom_word(raddr) : 12'h000;
-    assign rdata = written[raddr] ? mem[raddr] : rom;
+    // ---- port 1 -----------------------------------------------------------------------
+    reg [11:0] q1, rom1;
+    reg        w1;
+    always @(posedge clk) begin
+        q1 <= mem1[raddr];
+        rom1 <= (CHIP == 1) ? rom_word(raddr) : 12'h000;
+    end
+    always @(posedge clk) begin
+        if (rst)
+            w1 <= 1'b0;
+        else
+            w1 <= valid(raddr);
+    end
+    assign rdata = w1 ? q1 : rom1;
 
     // ---- port 2 -----------------------------------------------------------------------
     reg [11:0] q2;
@@ -119,7 +166,7 @@ module tmc429_ram #(
             w2 <= 1'b0;
             a2 <= 7'd0;
         end else if (re2) begin
-            w2 <= written[raddr2[6:1]];
+            w2 <= valid(raddr2[6:1]);
             a2 <= raddr2;
         end
     end

@@ -111,27 +111,26 @@ module tmc429_ramp #(
     // stop condition, the slowest input, only selects among them.
     /* verilator lint_off UNUSEDSIGNAL */     // only the carry / sign are used
     wire [20:0] d_t   = {vt[11], vt, 8'd0} - {v[19], v};
-    wire [20:0] d_z   = 21'd0 - {v[19], v};
+    wire [11:0] d_z   = 12'd0 - v[11:0];                                 // -V, bits 11..0
     wire [11:0] le_t  = {1'b0, a_max} - {1'b0, d_t[10:0]};              // d <= a: no borrow
     wire [11:0] ge_t  = d_t[11:0] + {1'b0, a_max};                      // d >= -a: sign 0
-    wire [11:0] le_z  = {1'b0, a_max} - {1'b0, d_z[10:0]};
-    wire [11:0] ge_z  = d_z[11:0] + {1'b0, a_max};
     /* verilator lint_on UNUSEDSIGNAL */
     wire        dz_t  = d_t == 21'd0;
     wire        up_t  = ~d_t[20] & ~dz_t;
     wire        land_t = up_t ? ((d_t[20:11] == 10'h000) & ~le_t[11])
                               : (((d_t[20:11] == 10'h3FF) & ~ge_t[11]) | dz_t);
-    wire        up_z  = v_neg;                                          // d_z = -V > 0
-    wire        land_z = up_z ? ((d_z[20:11] == 10'h000) & ~le_z[11])
-                              : (((d_z[20:11] == 10'h3FF) & ~ge_z[11]) | v_zero);
+    wire [19:0] v_up  = v + {9'd0, a_max};                              // |V -+ a| < 2^19
+    wire [19:0] v_dn  = v - {9'd0, a_max};
+    // T = 0 lands when |V| <= a_max: V < 0: V + a_max >= 0; V >= 0: V - a_max <= 0 (the
+    // step sums themselves, no wrap-around: |V| < 2^19, a_max < 2^11)
+    wire        up_z  = v_neg;                                          // -V > 0
+    wire        land_z = up_z ? ~v_up[19] : (v_dn[19] | (v_dn == 20'd0));
     wire        ss    = stop & soft_sw;                                 // soft stop: T = 0
     wire [11:0] t_hi  = ss ? 12'd0 : vt;
     wire        up    = ss ? up_z : up_t;
     wire        land  = ss ? land_z : land_t;
-    wire [11:0] d_lo  = ss ? d_z[11:0] : d_t[11:0];
+    wire [11:0] d_lo  = ss ? d_z : d_t[11:0];
     wire [11:0] a_neg = 12'd0 - {1'b0, a_max};
-    wire [19:0] v_up  = v + {9'd0, a_max};                              // |V -+ a| < 2^19
-    wire [19:0] v_dn  = v - {9'd0, a_max};
     wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
     // the change of V: d when landing, else the step
     wire [11:0] a_rmp = land ? d_lo : (up ? {1'b0, a_max} : a_neg);

@@ -20,6 +20,7 @@ module tmc429_regfile #(
     input  wire [31:0] cmd,
     input  wire        frame_start,   // synchronized nSCS_C falling edge: wake-up (C66)
     input  wire [6:0]  rd_addr,
+    input  wire [5:0]  rd_addr_q,     // the same address, stable one edge earlier (shadow RAM)
     output reg  [23:0] rd_data,
     input  wire [2:0]  ref_q,         // synchronized REF3..1
     input  wire [2:0]  refr_q,        // synchronized REFR3..1
@@ -80,7 +81,6 @@ module tmc429_regfile #(
     reg        cw;             // cover datagram waiting
     reg [5:0]  cover_pos;
     reg [4:0]  cover_len;
-    reg [23:0] cover_datagram;
     reg [8:0]  if_conf;        // en_refr, pos_comp_sel[1:0], en_sd, inv_dir, inv_stp, step_half, sdo_int, inv_ref
     reg [23:0] pos_comp;
     reg        pc_i, pc_m, pc_hist;
@@ -129,9 +129,7 @@ module tmc429_regfile #(
     localparam  NMOT = (CHIP == 2) ? 1 : 3;
 
     wire [5:0]  m_rm;
-    wire [32:0] m_vmin, m_vmax;
-    wire [20:0] m_pmul;
-    wire [11:0] m_pdiv, m_pulse_div, m_ramp_div;
+    wire [11:0] m_pulse_div, m_ramp_div;
     wire [35:0] m_vt;
     wire [2:0]  ramp_tick;
     assign drv_ramp_tick = ramp_tick;
@@ -151,8 +149,6 @@ module tmc429_regfile #(
                 .vt(m_vt[12*g+11:12*g]),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
-                .v_min(m_vmin[11*g+10:11*g]), .v_max(m_vmax[11*g+10:11*g]),
-                .pmul(m_pmul[7*g+6:7*g]), .pdiv(m_pdiv[4*g+3:4*g]),
                 .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
                 .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]),
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
@@ -166,8 +162,10 @@ module tmc429_regfile #(
     tmc429_vtarget #(.NMOT(NMOT)) u_vt (
         .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
         .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
-        .v_min(m_vmin), .v_max(m_vmax), .v_target(p_v_target),
-        .pmul(m_pmul), .pdiv(m_pdiv), .vt(m_vt));
+        .v_target(p_v_target),
+        .cfg_we(wr & ~a7[6] & (a7[5:4] != 2'd3) & ((a7[5:4] == 2'd0) | m_present1)),
+        .cfg_m(a7[5:4]), .cfg_idx(jdx), .cfg_data(wdata[14:0]),
+        .vt(m_vt));
 
     // ---- position compare (C65) -------------------------------------------------------
     reg [23:0] pc_x;
@@ -211,12 +209,24 @@ module tmc429_regfile #(
     assign drv_dgw       = dw;
     assign drv_cover_pos = cover_pos;
     assign drv_cover_len = cover_len;
-    assign drv_cover_datagram = cover_datagram;
+    // cover_datagram (C85) is used only by the chain's start edge, which copies it: it lives
+    // in a one-word RAM, read every edge. In the edge after a write the RAM output is not yet
+    // the new word; the datagram is still in the SPI input register then (no frame can
+    // follow within one edge), so that edge takes it from there.
+    reg         cov_late;
+    wire [23:0] cov_q;
+    wire        cov_wq;
+    wire        w_cover = wr_g & HAS_CHAIN & (jdx == 4'd3);
+    tmc429_wram #(.AW(1), .DW(24), .WMASK(2'b01)) u_cover (
+        .clk(clk), .rst(rst),
+        .we(w_cover), .waddr(1'b0), .wdata(wdata),
+        .re(1'b1), .raddr(1'b0), .q(cov_q), .wq(cov_wq));
+    assign drv_cover_datagram = cov_late ? wdata : (cov_wq ? cov_q : 24'd0);
 
     always @(posedge clk) begin
         if (rst) begin
             dw <= 1'b0;  cw <= 1'b0;
-            cover_pos <= 6'd0;  cover_len <= 5'd0;  cover_datagram <= 24'd0;
+            cover_pos <= 6'd0;  cover_len <= 5'd0;  cov_late <= 1'b0;
             if_conf <= 9'd0;  pos_comp <= 24'd0;
             pc_i <= 1'b0;  pc_m <= 1'b0;  pc_hist <= HAS_429;   // match holds at reset
             gp_low <= 8'd0;  clk2_div <= 8'd15;
@@ -227,6 +237,7 @@ module tmc429_regfile #(
             poscmp_q <= HAS_429;
         end else begin
             nint_q   <= ~int_o;
+            cov_late <= w_cover;
             poscmp_q <= pc_match;
             if (run) begin
                 prescaler <= prescaler + 20'd1;
@@ -251,10 +262,7 @@ module tmc429_regfile #(
                           cover_pos <= wdata[13:8];
                           cover_len <= wdata[4:0];
                       end
-                4'd3: if (HAS_CHAIN) begin
-                          cover_datagram <= wdata;
-                          cw <= 1'b1;
-                      end
+                4'd3: if (HAS_CHAIN) cw <= 1'b1;    // the datagram: u_cover
                 4'd4: if (HAS_429) if_conf <= wdata[8:0];
                 4'd5: if (HAS_429) pos_comp <= wdata;
                 4'd8: pd <= 1'b1;
@@ -280,37 +288,116 @@ module tmc429_regfile #(
     tmc429_ram #(.CHIP(CHIP)) u_ram (
         .clk(clk), .rst(rst),
         .we(wr_ram), .waddr(a7[5:0]), .wdata({wdata[13:8], wdata[5:0]}),
-        .raddr(rd_addr[5:0]), .rdata(ram_rdata),
+        .raddr(rd_addr_q), .rdata(ram_rdata),
         .re2(chain_ram_re), .raddr2(chain_ram_addr), .rdata2(chain_ram_q));
 
-    // ---- read mux ---------------------------------------------------------------------
+    // ---- shadow RAM of the read values (C20-C29) -------------------------------------------
+    // A register that only the µC writes reads back what the write stored: each write of a
+    // register address (0..63) also stores its read value, formatted, in a word of the shadow
+    // RAM, and the read port of the SPI slave reads it with the address of the frame. The read
+    // is synchronous: the address is complete after the 7th bit (rd_addr_q) and the data is
+    // loaded at the 8th bit's rising SCK_C edge, at least one edge later (C10), and no write
+    // executes inside a frame. Words that are not written (state, constants, registers a
+    // variant lacks) have no "written" flag and read the reset value; the state registers
+    // (x_actual, v_target, v_actual, a_actual, lp, int_flags, x_latched, ustep_count, pc_i,
+    // cw, readback, switches) are ORed in from the combinational mux below.
+    localparam [15:0] MOT_W = (CHIP == 2) ? 16'b0011_1110_0100_1101   // IDX 0,2,3,6,9..13
+                                          : 16'b0011_1111_0100_1101;  // and 8
+    localparam [15:0] GLB_W = (CHIP == 0) ? 16'b1000_0000_0000_1100   // JDX 2, 3, 15
+                            : (CHIP == 2) ? 16'b1000_0000_0111_0000   // JDX 4, 5, 6, 15
+                                          : 16'b1000_0000_0111_1100;
+    localparam [63:0] SH_W = {GLB_W, (CHIP == 2) ? 32'd0 : {MOT_W, MOT_W}, MOT_W};
+
+    // the read value of register a7[5:0] after a write of wdata
+    wire [3:0] sh_idx = a7[3:0];
+    wire       sh_glb = a7[5:4] == 2'd3;
+    reg [23:0] sh_wdata;
     always @(*) begin
-        rd_data = 24'd0;
-        if (rd_addr[6]) begin
-            rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
-        end else if (rd_addr[5:4] == 2'b00) begin
-            rd_data = m_rdata[23:0];
-        end else if (rd_addr[5:4] == 2'b01) begin
-            rd_data = m_present1 ? m_rdata[47:24] : 24'd0;
-        end else if (rd_addr[5:4] == 2'b10) begin
-            rd_data = m_present1 ? m_rdata[71:48] : 24'd0;
+        sh_wdata = 24'd0;
+        if (!sh_glb) begin
+            case (sh_idx)
+            4'd0:  sh_wdata = wdata;                                        // x_target
+            4'd2, 4'd3, 4'd6: sh_wdata = {13'd0, wdata[10:0]};              // v_min, v_max, a_max
+            4'd8:  sh_wdata = {1'b0, wdata[22:20], 1'b0, wdata[18:16], 1'b0, wdata[14:12],
+                               1'b0, wdata[10:0]};
+            4'd9:  sh_wdata = {8'd0, 1'b1, wdata[14:8], 4'd0, wdata[3:0]};  // C22: bit 15 reads 1
+            4'd10: sh_wdata = {12'd0, wdata[11:8], 6'd0, wdata[1:0]};       // ref_conf, rm (lp: state)
+            4'd11: sh_wdata = {8'd0, wdata[15:8], 8'd0};                    // int_mask (flags: state)
+            4'd12: sh_wdata = {8'd0, wdata[15:8], 5'd0, wdata[2:0]};
+            4'd13: sh_wdata = {12'd0, wdata[11:0]};
+            default: ;
+            endcase
         end else begin
-            case (rd_addr[3:0])
-            4'd0:  rd_data = HAS_CHAIN ? chain_readback[23:0] : 24'd0;    // datagram_low_word
-            4'd1:  rd_data = HAS_CHAIN ? chain_readback[47:24] : 24'd0;   // datagram_high_word
-            4'd2:  rd_data = HAS_CHAIN ? {cw | chain_cover_busy, 9'd0, cover_pos + 6'd1, 3'd0,
-                                          cover_len} : 24'd0;
-            4'd3:  rd_data = HAS_CHAIN ? cover_datagram : 24'd0;
-            4'd4:  rd_data = HAS_429 ? {15'd0, if_conf} : 24'd0;
-            4'd5:  rd_data = HAS_429 ? pos_comp : 24'd0;
-            4'd6:  rd_data = HAS_429 ? {15'd0, pc_m, 7'd0, pc_i} : 24'd0;
-            4'd9:  rd_data = HAS_429 ? 24'h429101 : 24'd0;   // type_version (C29)
-            4'd14: rd_data = {18'd0, sw_l[2], sw_r[2], sw_l[1], sw_r[1], sw_l[0], sw_r[0]};
-            4'd15: rd_data = (CHIP == 2) ? {2'd0, mot1r, 9'd0, clk2_div[3:0], 8'd0}
-                                         : {2'd0, mot1r, refmux, 3'd0, cont_update, clk2_div, gp_low};
-            default: rd_data = 24'd0;   // power_down reads 0; unused addresses
+            case (sh_idx)
+            4'd2:  sh_wdata = {10'd0, wdata[13:8] + 6'd1, 3'd0, wdata[4:0]};  // cover_pos + 1, len
+            4'd3:  sh_wdata = wdata;                                          // cover_datagram
+            4'd4:  sh_wdata = {15'd0, wdata[8:0]};                            // if_configuration
+            4'd5:  sh_wdata = wdata;                                          // pos_comp
+            4'd6:  sh_wdata = {15'd0, wdata[8], 8'd0};                        // pc mask (pc_i: state)
+            default: sh_wdata = (CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
+                                            : {2'd0, wdata[21:20], 3'd0, wdata[16:0]};
             endcase
         end
+    end
+
+    // reset value (C2) of the read value of register address a; C29 type_version
+    function [23:0] sh_rst;
+        input [5:0] a;
+        begin
+            sh_rst = 24'd0;
+            if (a[5:4] != 2'd3) begin
+                if (a[3:0] == 4'd9 && (a[5:4] == 2'd0 || CHIP != 2))
+                    sh_rst = 24'h008000;
+            end else begin
+                case (a[3:0])
+                4'd2:  sh_rst = (CHIP != 2) ? 24'h000100 : 24'd0;
+                4'd9:  sh_rst = (CHIP != 0) ? 24'h429101 : 24'd0;
+                4'd15: sh_rst = 24'h000F00;
+                default: ;
+                endcase
+            end
+        end
+    endfunction
+
+    wire [23:0] sh_q;
+    wire        sh_wq;
+    tmc429_wram #(.AW(6), .DW(24), .WMASK(SH_W)) u_shadow (
+        .clk(clk), .rst(rst),
+        .we(wr & ~a7[6]), .waddr(a7[5:0]), .wdata(sh_wdata),
+        .re(1'b1), .raddr(rd_addr_q), .q(sh_q), .wq(sh_wq));
+    wire [23:0] sh_data = sh_wq ? sh_q : sh_rst(rd_addr[5:0]);
+
+    // ---- read mux ---------------------------------------------------------------------
+    reg [23:0] st_data;
+    always @(*) begin
+        st_data = 24'd0;
+        if (rd_addr[5:4] == 2'b00) begin
+            st_data = m_rdata[23:0];
+        end else if (rd_addr[5:4] == 2'b01) begin
+            st_data = m_present1 ? m_rdata[47:24] : 24'd0;
+        end else if (rd_addr[5:4] == 2'b10) begin
+            st_data = m_present1 ? m_rdata[71:48] : 24'd0;
+        end else begin
+            case (rd_addr[3:0])
+            4'd0:  st_data = HAS_CHAIN ? chain_readback[23:0] : 24'd0;    // datagram_low_word
+            4'd1:  st_data = HAS_CHAIN ? chain_readback[47:24] : 24'd0;   // datagram_high_word
+            4'd2:  st_data = {HAS_CHAIN && (cw | chain_cover_busy), 23'd0};
+            4'd6:  st_data = {23'd0, HAS_429 && pc_i};
+            4'd14: st_data = {18'd0, sw_l[2], sw_r[2], sw_l[1], sw_r[1], sw_l[0], sw_r[0]};
+            default: st_data = 24'd0;   // power_down reads 0; the rest: shadow RAM
+            endcase
+        end
+    end
+    // IDX 5 (v_actual): the motor's read data carries V[19:8] and the rounding carry in bit
+    // 12 (tmc429_motor_regs); one incrementer serves the three motors
+    wire        rd_va  = (rd_addr[5:4] != 2'd3) & (rd_addr[3:0] == 4'd5);
+    wire        va_c   = rd_va & st_data[12];
+    wire [23:0] st_va  = {st_data[23:13], st_data[12] & ~rd_va, st_data[11:0] + {11'd0, va_c}};
+    always @(*) begin
+        if (rd_addr[6])
+            rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
+        else
+            rd_data = st_va | sh_data;
     end
 endmodule
 

@@ -21,6 +21,9 @@ module tmc429_spi_slave (
     input  wire [7:0]  status,
     // read port: address of the frame being received, data of the old state
     output wire [6:0]  rd_addr,
+    // the same address (bits 5..0) from the edge after the 7th bit on: it is stable for at
+    // least one edge before the read data is loaded, for a synchronous (block RAM) read
+    output wire [5:0]  rd_addr_q,
     input  wire [23:0] rd_data,
     // synchronized nSCS_C falling edge (frame start, wake-up from power down)
     output wire        frame_start,
@@ -60,6 +63,7 @@ module tmc429_spi_slave (
     wire        rd_load = sck_rise & (cnt == 6'd7) & sdi_q;
 
     assign rd_addr     = in_next[7:1];
+    assign rd_addr_q   = in_sr[5:0];
     assign frame_start = nscs_fall;
     assign exec        = nscs_rise & (cnt == 6'd32);
     assign cmd         = in_sr;

@@ -4,6 +4,8 @@
 // Schedule inside the 32-cycle frame (phase p = prescaler[4:0], C41):
 //   p = 7m        snapshot of motor m: dx = x_target - x_actual, rm, pmul, pdiv, v_min,
 //                 v_max, v_target are taken from the old state into the A registers
+//                 (v_min, v_max, pmul and pdiv: the synchronous read of the parameter RAMs, whose
+//                 output register is their snapshot)
 //   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE)
 //   p = 7m+2..+6  acc = c * W, W = p_mul << u (10-bit multiplier word, Horner, 2 bits per cycle)
 //   p = 7m+7..+13 B: RAMP_MODE: square root of the radicand (acc << 7) >> pdiv, two result bits
@@ -11,8 +13,10 @@
 //                 four bits per cycle shifted out of acc
 //   p = 7m+14     C: clamp to [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign, result
 //                 into vt_next[m]
-//   p = 29        commit: vt[m] := vt_next[m] for all motors (vt is used from phase 30 on)
-// Motor 2's result is written at p = 28. Stages A, B and C work on three motors at once
+//   p = 29        commit: vt[m] := vt_next[m] for all motors (vt is used from phase 30 on);
+//                 motor 2's result is still the output of C at p = 29 (B and C hold after
+//                 p = 27), so it is committed from there and needs no vt_next register
+// Motor 2's result is ready at p = 28 and committed from C at p = 29. Stages A, B and C work on three motors at once
 // (A on m+1 while B runs m): each stage reads the other's registers from the old state.
 //
 // Square root without a multiplier-wide shifter: with t = pdiv >> 1, e = pdiv & 1 and
@@ -22,6 +26,13 @@
 // means "saturated"), and at most 14 steps (7 cycles) remain. An odd step count computes
 // one extra result bit that is dropped ("odd"). SOFT_MODE uses the same B registers to shift
 // (c * p_mul * 2^u) out four bits per cycle; u and "odd" align the last bit with 3 + pdiv.
+//
+// v_max (IDX 3) and p_mul/pdiv (IDX 9) are read by nothing but the snapshot, so they have no
+// flip-flops, and v_min (IDX 2) has a copy for the snapshot: the µC writes them into three
+// parameter RAMs (tmc429_wram, one word per motor)
+// and the snapshot edge reads the word of motor m. A write in a snapshot edge is written one
+// edge later, so the snapshot gives the old value, as the register did (C3); a word not
+// written since reset reads 0 (C2).
 `default_nettype none
 
 module tmc429_vtarget #(
@@ -35,21 +46,24 @@ module tmc429_vtarget #(
     input  wire [5:0]  rm,
     input  wire [71:0] x_target,
     input  wire [71:0] x_actual,
-    input  wire [32:0] v_min,
-    input  wire [32:0] v_max,
     input  wire [35:0] v_target,
-    input  wire [20:0] pmul,      // pmul[6:0] per motor (p_mul = 128 + pmul, C22)
-    input  wire [11:0] pdiv,
+    // µC write to motor cfg_m's register cfg_idx (IDX 2: v_min; 3: v_max; 9: pmul, pdiv, C22);
+    // cfg_m, cfg_idx and cfg_data still hold in the edge after cfg_we
+    input  wire        cfg_we,
+    input  wire [1:0]  cfg_m,
+    input  wire [3:0]  cfg_idx,
+    input  wire [14:0] cfg_data,
     // committed target velocities (12-bit two's complement), motor m in [12m+11:12m]
     output wire [35:0] vt
 );
     // ---- schedule --------------------------------------------------------------------
     reg        a_snap, a_c, a_mul, b_load, b_run, c_out, commit;
-    reg [1:0]  a_m, c_m;
+    reg [1:0]  a_m;
+    reg        c_m;                // motor of C's result: 0 or 1 (motor 2: committed from C)
     reg [2:0]  b_k;               // B cycle index 0..6
     always @(*) begin
         a_snap = 1'b0; a_c = 1'b0; a_mul = 1'b0; b_load = 1'b0; b_run = 1'b0; c_out = 1'b0;
-        commit = 1'b0; a_m = 2'd0; c_m = 2'd0; b_k = 3'd0;
+        commit = 1'b0; a_m = 2'd0; c_m = 1'b0; b_k = 3'd0;
         case (phase)
         5'd0:  begin a_snap = 1'b1; a_m = 2'd0; end
         5'd7:  begin a_snap = 1'b1; a_m = 2'd1; end
@@ -70,9 +84,8 @@ module tmc429_vtarget #(
         default: ;
         endcase
         case (phase)
-        5'd14: begin c_out = 1'b1; c_m = 2'd0; end
-        5'd21: begin c_out = 1'b1; c_m = 2'd1; end
-        5'd28: begin c_out = 1'b1; c_m = 2'd2; end
+        5'd14: begin c_out = 1'b1; c_m = 1'b0; end
+        5'd21: begin c_out = 1'b1; c_m = 1'b1; end
         5'd29: commit = 1'b1;
         default: ;
         endcase
@@ -81,35 +94,61 @@ module tmc429_vtarget #(
     // ---- A: snapshot, c, multiply ------------------------------------------------------
     reg [23:0] sx_t, sx_a;
     reg [1:0]  s_rm;
-    reg [6:0]  s_pmul;
-    reg [3:0]  s_pdiv;
-    reg [10:0] s_vmin, s_vmax;
     reg [11:0] s_vtg;
     always @(*) begin
         case (a_m)
         2'd1: begin
             sx_t = x_target[47:24]; sx_a = x_actual[47:24]; s_rm = rm[3:2];
-            s_pmul = pmul[13:7]; s_pdiv = pdiv[7:4]; s_vmin = v_min[21:11];
-            s_vmax = v_max[21:11]; s_vtg = v_target[23:12];
+            s_vtg = v_target[23:12];
         end
         2'd2: begin
             sx_t = x_target[71:48]; sx_a = x_actual[71:48]; s_rm = rm[5:4];
-            s_pmul = pmul[20:14]; s_pdiv = pdiv[11:8]; s_vmin = v_min[32:22];
-            s_vmax = v_max[32:22]; s_vtg = v_target[35:24];
+            s_vtg = v_target[35:24];
         end
         default: begin
             sx_t = x_target[23:0]; sx_a = x_actual[23:0]; s_rm = rm[1:0];
-            s_pmul = pmul[6:0]; s_pdiv = pdiv[3:0]; s_vmin = v_min[10:0];
-            s_vmax = v_max[10:0]; s_vtg = v_target[11:0];
+            s_vtg = v_target[11:0];
         end
         endcase
     end
 
+    // parameter RAMs: the read at the snapshot edge is the snapshot of v_min, v_max, pmul, pdiv.
+    // A write in a snapshot edge is deferred by one edge (the snapshot takes the old value,
+    // C3; the next snapshot is 7 edges later): `cfg_*` still hold the datagram in the next
+    // edge (the SPI input register stays until the next frame), so only the write enable is
+    // delayed and no read ever meets a write.
+    wire        snap_re = run & a_snap;
+    reg         cfg_late;
+    always @(posedge clk) begin
+        if (rst)
+            cfg_late <= 1'b0;
+        else
+            cfg_late <= cfg_we & snap_re;
+    end
+    wire        cfg_wr = (cfg_we & ~snap_re) | cfg_late;
+    wire [10:0] q_vmax, q_pd;
+    wire        wq_vmax, wq_pd;
+    tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_vmax (
+        .clk(clk), .rst(rst),
+        .we(cfg_wr & (cfg_idx == 4'd3)), .waddr(cfg_m), .wdata(cfg_data[10:0]),
+        .re(snap_re), .raddr(a_m), .q(q_vmax), .wq(wq_vmax));
+    tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_pd (
+        .clk(clk), .rst(rst),
+        .we(cfg_wr & (cfg_idx == 4'd9)), .waddr(cfg_m), .wdata({cfg_data[14:8], cfg_data[3:0]}),
+        .re(snap_re), .raddr(a_m), .q(q_pd), .wq(wq_pd));
+    wire [10:0] q_vmin;
+    wire        wq_vmin;
+    tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_vmin (
+        .clk(clk), .rst(rst),
+        .we(cfg_wr & (cfg_idx == 4'd2)), .waddr(cfg_m), .wdata(cfg_data[10:0]),
+        .re(snap_re), .raddr(a_m), .q(q_vmin), .wq(wq_vmin));
+    wire [10:0] a_vmin = wq_vmin ? q_vmin : 11'd0;
+    wire [10:0] a_vmax = wq_vmax ? q_vmax : 11'd0;
+    wire [6:0]  a_pmul = wq_pd ? q_pd[10:4] : 7'd0;
+    wire [3:0]  a_pdiv = wq_pd ? q_pd[3:0] : 4'd0;
+
     reg [23:0] a_dx;
     reg [1:0]  a_rm;
-    reg [6:0]  a_pmul;
-    reg [3:0]  a_pdiv;
-    reg [10:0] a_vmin, a_vmax;
     reg [11:0] a_vtg;
     reg        a_sgn, a_zero;
     reg [18:0] a_cv;              // c
@@ -132,14 +171,14 @@ module tmc429_vtarget #(
 
     always @(posedge clk) begin
         if (rst) begin
-            a_dx <= 24'd0; a_rm <= 2'd0; a_pmul <= 7'd0; a_pdiv <= 4'd0;
-            a_vmin <= 11'd0; a_vmax <= 11'd0; a_vtg <= 12'd0;
+            a_dx <= 24'd0; a_rm <= 2'd0;
+            a_vtg <= 12'd0;
             a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 19'd0; a_w <= 10'd0; acc <= 29'd0;
         end else if (run) begin
             if (a_snap) begin
                 a_dx <= sx_t - sx_a;     // C43: 24-bit wrap-around
-                a_rm <= s_rm; a_pmul <= s_pmul; a_pdiv <= s_pdiv;
-                a_vmin <= s_vmin; a_vmax <= s_vmax; a_vtg <= s_vtg;
+                a_rm <= s_rm;
+                a_vtg <= s_vtg;
             end
             if (a_c) begin
                 a_sgn  <= dx_neg;
@@ -244,22 +283,22 @@ module tmc429_vtarget #(
         sm2c = sm[11] ? (12'd0 - {1'b0, sm[10:0]}) : {1'b0, sm[10:0]};
     endfunction
 
-    reg [35:0] vt_next;           // motor m in [12m+11:12m], sign and magnitude
+    reg [23:0] vt_next;           // motor m (0, 1) in [12m+11:12m], sign and magnitude
     reg [35:0] vt_r;
     wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
     always @(posedge clk) begin
         if (rst) begin
-            vt_next <= 36'd0;
+            vt_next <= 24'd0;
             vt_r <= 36'd0;
         end else if (run) begin
-            if (c_out)
-                case (c_m)
-                2'd0:    vt_next[11:0] <= res;
-                2'd1:    vt_next[23:12] <= res;
-                default: vt_next[35:24] <= res;
-                endcase
+            if (c_out) begin
+                if (c_m)
+                    vt_next[23:12] <= res;
+                else
+                    vt_next[11:0] <= res;
+            end
             if (commit)
-                vt_r <= {sm2c(vt_next[35:24]), sm2c(vt_next[23:12]), sm2c(vt_next[11:0])}
+                vt_r <= {sm2c(res), sm2c(vt_next[23:12]), sm2c(vt_next[11:0])}
                         & present;
         end
     end

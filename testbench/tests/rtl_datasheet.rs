@@ -36,6 +36,21 @@ fn ram_write_example_and_power_on_contents() {
     assert_eq!(frame(&mut rtl, Frame::new(0x8100_0000)), 0x1500_0000);
 }
 
+/// A RAM read in the first edges after reset, while the power-on contents are still being
+/// copied from the ROM into the RAM array (rtl/tmc429_ram.v, C30): the fastest frame (SCK_C
+/// 3 CLK low and high) loads its read data about 55 edges after reset, when words 0..50 are
+/// copied and word 63 is not; both read their power-on contents.
+#[test]
+fn ram_power_on_contents_during_the_copy() {
+    let fast = |datagram| Frame { datagram, extra: 0, nbits: 32, half: 3, setup: 3, hold: 3, gap: 3 };
+    let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc429));
+    assert_eq!(frame(&mut rtl, fast(0xFF00_0000)), 0x1500_3F3F); // LUT word 63: 63, 63
+    let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc429));
+    assert_eq!(frame(&mut rtl, fast(0x8100_0000)), 0x1500_0511); // cells 0, 1: $11, $05
+    let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc428));
+    assert_eq!(frame(&mut rtl, fast(0xFF00_0000)), 0x1500_0000); // TMC428: all 0
+}
+
 #[test]
 fn power_on_registers() {
     let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc429));
