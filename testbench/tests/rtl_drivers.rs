@@ -1,6 +1,7 @@
 //! The Verilated RTL alone: driver-chain datagrams, cover, SCK_S timing, chip selects, refmux
 //! sampling and the Step/Dir pin levels, with the exact values of the datasheets and the
 //! contract (spec-digest §5.2, TMC428 §9.3, §9.7, Table 6-2; C80–C93).
+#![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use tmc429_model::ram::{SINE_LUT, TABLE_11_2};
 use tmc429_model::{Chip, Inputs, Outputs};

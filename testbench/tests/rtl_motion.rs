@@ -2,6 +2,7 @@
 //! laws of C50 (values computed from the contract's formulas), moves that end exactly on the
 //! target (C52), VELOCITY_MODE reaching v_target (C51), the hard switch stop (C61) and the latch
 //! (C62). Register values are read back over SPI as a µC would.
+#![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use tmc429_model::{Chip, Inputs};
 use tmc429_testbench::stimulus::Frame;
