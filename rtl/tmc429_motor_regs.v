@@ -50,6 +50,7 @@ module tmc429_motor_regs #(
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
     reg [11:0] dx_ref_tolerance;
+    reg [12:0] tol_k;          // 4096 - dx_ref_tolerance, for the tolerance window's speed
     wire       lp, stop, tol_ok;
     wire [23:0] x_latched;
     /* verilator lint_off UNUSEDSIGNAL */
@@ -63,7 +64,7 @@ module tmc429_motor_regs #(
     tmc429_ramp #(.HAS_USTEP(HAS_IDX15)) u_ramp (
         .clk(clk), .rst(rst), .run(run), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
         .rm(rm), .x_target(x_target), .v_min(v_min), .a_max(a_max), .ref_conf(ref_conf),
-        .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
+        .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .tol_k(tol_k), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
         .we(we), .widx(widx), .wdata(wdata),
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
@@ -102,6 +103,7 @@ module tmc429_motor_regs #(
             int_hist <= 8'b0011_0101;   // the conditions of the reset state: no event at power-on
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
             dx_ref_tolerance <= 12'd0;
+            tol_k <= 13'd4096;
         end else begin
             if (run)
                 int_hist <= cond;
@@ -124,7 +126,10 @@ module tmc429_motor_regs #(
                            ramp_div <= wdata[11:8];
                            usrs <= wdata[2:0];
                        end
-                4'd13: dx_ref_tolerance <= wdata[11:0];
+                4'd13: begin
+                           dx_ref_tolerance <= wdata[11:0];
+                           tol_k <= 13'd4096 - {1'b0, wdata[11:0]};
+                       end
                 // IDX 1, 4, 5, 14, 15: motion state in tmc429_ramp; IDX 3, 9: parameter
                 // RAM of tmc429_vtarget; IDX 7 (a_actual) and 11 (above): no storage here
                 default: ;

@@ -3,12 +3,9 @@
 // TMC428 §8.6-§8.16).
 //
 // Every input is a level of the old state (C1); every output is a register of this unit
-// except the combinational condition outputs (xeqt, stop, v_actual) which are functions of its
-// registers and inputs. tol_ok is a register equal to |x_actual| < dx_ref_tolerance of the
-// current state: it is formed from the next state (the µC write of IDX 13 arrives on
-// we/widx/wdata, as tmc429_motor_regs executes it in the same edge), which takes the tolerance
-// window's carry chains off the switch stop -> zero V -> pulse step path (C61). The port list
-// is the boundary at which test vectors of the unit are taken (rtl/README.md).
+// except the combinational condition outputs (xeqt, stop, tol_ok, v_actual) which are
+// functions of its registers and inputs. The port list is the boundary at which test vectors of
+// the unit are taken (rtl/README.md).
 //
 // Per cycle with run = 1, from the old state:
 //   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol_L, stop_R
@@ -39,6 +36,7 @@ module tmc429_ramp #(
     input  wire [3:0]  ref_conf,   // REF_RnL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L
     input  wire [2:0]  usrs,
     input  wire [11:0] dx_ref_tolerance,
+    input  wire [12:0] tol_k,      // 4096 - dx_ref_tolerance (kept with the register)
     input  wire [11:0] vt,         // committed target velocity (tmc429_vtarget)
     input  wire        sw_l,       // left and right switch (C60)
     input  wire        sw_r,
@@ -60,7 +58,7 @@ module tmc429_ramp #(
     // conditions of the old state
     output wire        xeqt,       // x_actual == x_target
     output wire        stop,       // switch stop condition (STOP interrupt, C63)
-    output reg         tol_ok,     // |x_actual| < dx_ref_tolerance
+    output wire        tol_ok,     // |x_actual| < dx_ref_tolerance
     output wire [11:0] v_actual    // readout sign(V) * (|V| >> 8) (C42)
 );
     reg ref_prev;
@@ -77,19 +75,15 @@ module tmc429_ramp #(
     assign v_actual = v[19:8] + {11'd0, v_neg & ~v_lo0};
 
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
-    // |x| < tol: for x >= 0, x < tol, i.e. x_lo - tol borrows; for x < 0 (x >= -4096 here),
-    // 4096 - x_lo < tol, i.e. x_lo + tol > 4096. tol_ok is the register below.
-    function tol_f(input [23:0] x, input [11:0] t);
-        /* verilator lint_off UNUSEDSIGNAL */     // only the borrow of the difference is used
-        reg [12:0] dif;
-        /* verilator lint_on UNUSEDSIGNAL */
-        reg [12:0] sum;
-        begin
-            dif   = {1'b0, x[11:0]} - {1'b0, t};
-            sum   = {1'b0, x[11:0]} + {1'b0, t};
-            tol_f = (~|x[23:12] & dif[12]) | (&x[23:12] & sum[12] & (|sum[11:0]));
-        end
-    endfunction
+    wire        x_hi0 = x_actual[23:12] == 12'h000;
+    wire        x_hi1 = x_actual[23:12] == 12'hFFF;
+    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096,
+    // i.e. x_lo > k = 4096 - tol (k = tol_k, a register: one carry chain after x_actual)
+    /* verilator lint_off UNUSEDSIGNAL */     // only the borrows of the differences are used
+    wire [12:0] x_dif = {1'b0, x_actual[11:0]} - {1'b0, dx_ref_tolerance};
+    wire [13:0] x_kd  = {1'b0, tol_k} - {2'b00, x_actual[11:0]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_kd[13]);
 
     wire rnl      = ref_conf[3];
     wire soft_sw  = ref_conf[2];
@@ -169,29 +163,13 @@ module tmc429_ramp #(
     wire        w_lp  = we & (widx == 4'd14);
     wire        w_us  = we & (widx == 4'd15) & (HAS_USTEP != 0);
     wire [11:0] w_v   = (wdata[11:0] == 12'h800) ? 12'h801 : wdata[11:0];
-    wire        w_tol = we & (widx == 4'd13);   // dx_ref_tolerance (tmc429_motor_regs)
-
-    // ---- tol_ok of the next state (a register) -----------------------------------------------
-    // x_actual after the edge: wdata (w_x, C3: the write wins), x_stp (a pulse step) or held;
-    // the tolerance after the edge: wdata (its write) or held. Candidate n (new x_actual: x_n =
-    // wdata or x_stp, selected by w_x, an early input) and candidate o (x_actual held: only a
-    // write of the tolerance changes the window, else the register holds) are formed from
-    // registers and inputs; the pulse step (late: it waits for the switch stop and the pulse
-    // adder) only selects.
-    wire        xs_ce = run & p_step;
-    wire [11:0] tl_nx = w_tol ? wdata[11:0] : dx_ref_tolerance;
-    wire [23:0] x_n   = w_x ? wdata : x_stp;
-    wire        tl_n  = tol_f(x_n, tl_nx);
-    wire        tl_o  = w_tol ? tol_f(x_actual, wdata[11:0]) : tol_ok;
 
     always @(posedge clk) begin
         if (rst) begin
             x_actual <= 24'd0;  v <= 20'd0;      v_target <= 12'd0;  a_actual <= 12'd0;
             ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
-            tol_ok <= 1'b0;     // x_actual = tolerance = 0: |0| < 0 is false
         end else begin
-            tol_ok <= (w_x | xs_ce) ? tl_n : tl_o;
             if (run) begin
                 ref_prev <= sel;
                 if (lp & ~v_zero & (sel != ref_prev)) begin

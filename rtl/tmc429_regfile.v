@@ -119,12 +119,7 @@ module tmc429_regfile #(
         else
             ones <= ones_d;
     end
-    // The ramp tick itself is a register, formed one edge early from the next state (timing:
-    // it starts the chain's datagram request): the next phase is 30 when the prescaler counts
-    // from 29 or holds at 30; in such an edge `ones` is already the count of the next state's
-    // frame (the frame changes only after phase 31); the next ramp_div is a µC write of this
-    // edge (IDX 12) or the old value.
-    wire ph_ramp_nx = run ? (prescaler[4:0] == 5'd29) : (prescaler[4:0] == 5'd30);
+    wire ph_ramp  = prescaler[4:0] == 5'd30;
     wire ph_pulse = prescaler[4:0] == 5'd31;
 
     // ---- motors -----------------------------------------------------------------------
@@ -136,23 +131,14 @@ module tmc429_regfile #(
     wire [5:0]  m_rm;
     wire [11:0] m_pulse_div, m_ramp_div;
     wire [35:0] m_vt;
-    reg  [2:0]  ramp_tick;
-    wire [2:0]  ramp_tick_nx;
+    wire [2:0]  ramp_tick;
     assign drv_ramp_tick = ramp_tick;
-    always @(posedge clk) begin
-        if (rst)
-            ramp_tick <= 3'd0;
-        else
-            ramp_tick <= ramp_tick_nx;
-    end
 
     genvar g;
     generate
         for (g = 0; g < 3; g = g + 1) begin : mot
             wire present = (g == 0) | m_present1;
-            wire       w_div   = wr & present & (a7[6:4] == g) & (a7[3:0] == 4'd12);
-            wire [3:0] rdiv_nx = w_div ? wdata[11:8] : m_ramp_div[4*g+3:4*g];
-            assign ramp_tick_nx[g] = ph_ramp_nx & (ones >= rdiv_nx);
+            assign ramp_tick[g] = ph_ramp & (ones >= m_ramp_div[4*g+3:4*g]);
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & present),
                 .we(wr & present & (a7[6:4] == g)), .widx(a7[3:0]), .wdata(wdata),
