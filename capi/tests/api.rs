@@ -1,8 +1,8 @@
 //! The C ABI called as C calls it, asserting the datasheet's values: the TMC428 §6.5 datagram
 //! examples (replies with the INT-corrected status $15, spec-digest §5.1), type_version $429101,
 //! the 8-bit status read, frame timing, INT, driver-chain and step events in `tmc429 spi --events`
-//! form, and every
-//! misuse (null, lengths 0 and 5, bad arguments, destroyed handle) returning its error code.
+//! form, and every misuse (null, lengths 0 and 5, bad arguments, destroyed handle) returning its
+//! error code.
 //! The calls are `unsafe` as every call through raw pointers is; the pointers here are valid.
 
 use std::ptr::{null, null_mut};
