@@ -1,7 +1,8 @@
 //! The C ABI called as C calls it, asserting the datasheet's values: the TMC428 §6.5 datagram
 //! examples (replies with the INT-corrected status $15, spec-digest §5.1), type_version $429101,
-//! the 8-bit status read, frame timing, INT events in `tmc429 spi --events` form, and every
-//! misuse (null, lengths 0 and 5, bad arguments, destroyed handle) returning its error code.
+//! the 8-bit status read, frame timing, INT, driver-chain and step events in `tmc429 spi --events`
+//! form, and every misuse (null, lengths 0 and 5, bad arguments, destroyed handle) returning its
+//! error code.
 //! The calls are `unsafe` as every call through raw pointers is; the pointers here are valid.
 
 use std::ptr::{null, null_mut};
@@ -41,21 +42,10 @@ fn cycle(h: u64) -> u64 {
 }
 
 fn drain(h: u64) -> Vec<String> {
-    unsafe {
-        let mut buf = [tmc429_event_t::default(); 8];
-        let n = tmc429_events_drain(h, buf.as_mut_ptr(), buf.len());
-        assert!(n >= 0);
-        buf[..n as usize]
-            .iter()
-            .map(|e| {
-                let mut s = [0 as std::ffi::c_char; 64];
-                let len = tmc429_event_format(e, s.as_mut_ptr(), s.len());
-                assert!(len > 0);
-                let b: Vec<u8> = s[..len as usize].iter().map(|&c| c as u8).collect();
-                String::from_utf8(b).unwrap()
-            })
-            .collect()
-    }
+    let mut buf = [tmc429_event_t::default(); 8];
+    let n = unsafe { tmc429_events_drain(h, buf.as_mut_ptr(), buf.len()) };
+    assert!(n >= 0);
+    buf[..n as usize].iter().map(format_event).collect()
 }
 
 #[test]
@@ -384,4 +374,93 @@ fn handles_work_from_several_threads() {
     for h in hs {
         assert_eq!(tmc429_destroy(h), TMC429_OK);
     }
+}
+
+/// Every event waiting, drained in chunks of 64 (oldest first).
+fn drain_all(h: u64) -> Vec<tmc429_event_t> {
+    let mut all = Vec::new();
+    loop {
+        let mut buf = [tmc429_event_t::default(); 64];
+        let n = unsafe { tmc429_events_drain(h, buf.as_mut_ptr(), buf.len()) };
+        assert!(n >= 0);
+        all.extend_from_slice(&buf[..n as usize]);
+        if (n as usize) < buf.len() {
+            return all;
+        }
+    }
+}
+
+/// Driver-chain datagrams through the C queue: continuous update with the TMC429's power-on
+/// chain configuration sends the 36-bit datagram $87F87F87F (spec-digest §5.2); the requests of
+/// the three motors come 341 ramp ticks apart (C83: reset offsets 0, 341, 682 of a 1024-tick
+/// counter), 341 · 32 = 10912 CLK at ramp_div 0.
+#[test]
+fn chain_events_through_the_queue() {
+    unsafe {
+        let h = create(TMC429_CHIP_TMC429, 0);
+        // $7E: cont_update = 1, clk2_div = 15, LSMD = 2 (three motors)
+        dg(h, 0x7E01_0F02);
+        tmc429_advance_cycles(h, 40_000);
+        let ev = drain_all(h);
+        assert!(ev.len() >= 3, "{} events", ev.len());
+        for e in &ev {
+            assert_eq!(e.kind, TMC429_EVENT_CHAIN);
+            assert_eq!((e.nbits, e.bits), (36, 0x8_7F87_F87F));
+        }
+        assert_eq!(ev[1].cycle - ev[0].cycle, 10912);
+        assert_eq!(ev[2].cycle - ev[1].cycle, 10912);
+        let line = format_event(&ev[0]);
+        assert_eq!(line, format!("chain {} 36 87F87F87F", ev[0].cycle));
+        tmc429_destroy(h);
+    }
+}
+
+/// Step events through the C queue: in Step/Dir mode (if_configuration en_sd, TMC429 §8.2.4) a
+/// RAMP_MODE move of motor 0 from 0 to 25 and back to 0 gives exactly 25 positive then 25
+/// negative step events of motor 0 (one pulse per step, C93–C95), and none of the other motors.
+#[test]
+fn step_events_through_the_queue() {
+    unsafe {
+        let h = create(TMC429_CHIP_TMC429, 0);
+        dg(h, 0x6800_0020); // en_sd
+        dg(h, 0x0400_0001); // v_min 1
+        dg(h, 0x0600_0064); // v_max 100
+        dg(h, 0x1800_3700); // pulse_div 3, ramp_div 7
+        dg(h, 0x0C00_0064); // a_max 100
+        dg(h, 0x1200_BD09); // p_mul 189, p_div 9
+        dg(h, 0x1400_0000); // RAMP_MODE
+        drain_all(h);
+        let mut steps = Vec::new();
+        for target in [25u32, 0] {
+            dg(h, target & 0xFF_FFFF);
+            let mut reached = false;
+            for _ in 0..2000 {
+                tmc429_advance_us(h, 1000);
+                let mut p = tmc429_motor_probe_t::default();
+                assert_eq!(tmc429_get_motor_probe(h, 0, &mut p), TMC429_OK);
+                if p.x_actual == target as i32 && p.v_internal == 0 {
+                    reached = true;
+                    break;
+                }
+            }
+            assert!(reached, "motor 0 did not reach {target}");
+            // the last pulse ends: t_STEP = 16 (1 + STPDIV) = 256 CLK (clk2_div 15, C93)
+            tmc429_advance_cycles(h, 1000);
+            steps.extend(drain_all(h).into_iter().filter(|e| e.kind == TMC429_EVENT_STEP));
+        }
+        assert_eq!(steps.len(), 50);
+        assert!(steps.iter().all(|e| e.motor == 0));
+        assert!(steps[..25].iter().all(|e| e.negative == 0));
+        assert!(steps[25..].iter().all(|e| e.negative == 1));
+        assert!(steps.windows(2).all(|w| w[0].cycle < w[1].cycle));
+        assert_eq!(format_event(&steps[0]), format!("step {} 0 +", steps[0].cycle));
+        tmc429_destroy(h);
+    }
+}
+
+fn format_event(e: &tmc429_event_t) -> String {
+    let mut s = [0 as std::ffi::c_char; 64];
+    let len = unsafe { tmc429_event_format(e, s.as_mut_ptr(), s.len()) };
+    assert!(len > 0);
+    s[..len as usize].iter().map(|&c| c as u8 as char).collect()
 }

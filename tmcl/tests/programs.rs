@@ -1,5 +1,6 @@
 //! The manual's example programs (§5.6.5, §5.7.20, §11.2, §11.3, §11.4, §11.6): they assemble,
-//! survive a disassembly round trip, and run on the module.
+//! survive a disassembly round trip, and run on the module; program interrupts from switches,
+//! inputs and target reached; the serial heartbeat (global parameter 68).
 
 mod common;
 use common::*;
@@ -302,4 +303,117 @@ fn assembler_errors_name_file_and_line() {
     assert_eq!(e.to_string(), "bad.tmc:2: unknown symbol 'Nowhere'");
     let e = asm::assemble(Path::new("bad.tmc"), "SAP 4, 0\n", &asm::FileSystem).unwrap_err();
     assert_eq!(e.to_string(), "bad.tmc:1: SAP expects 3 operand(s), found 2");
+}
+
+/// Global parameter 68, serial heartbeat (manual §10.1: "If this time limit is up and no further
+/// command is noticed the motor will be stopped"): commands every 50 ms keep a 100 ms heartbeat
+/// alive; without them every motor is stopped (target speed 0, ramped down to 0); a new command
+/// re-arms it.
+#[test]
+fn serial_heartbeat_stops_the_motors() {
+    let mut m = module();
+    let cmd = |m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32| {
+        match m.handle_instruction(&Instruction::new(o, t, mo, v)) {
+            Response::Normal(r) => assert_eq!(r.status, 100, "op {o}"),
+            other => panic!("op {o}: {other:?}"),
+        }
+    };
+    cmd(&mut m, op::SGP, 68, 0, 100);
+    cmd(&mut m, op::ROR, 0, 0, 300);
+    cmd(&mut m, op::ROR, 0, 2, 200);
+    for _ in 0..20 {
+        m.run_ms(50);
+        cmd(&mut m, op::GAP, 3, 0, 0);
+    }
+    // 1 s with commands every 50 ms: both axes at their speed (parameters 2 target, 3 actual)
+    assert_eq!((gap(&mut m, 2, 0), gap(&mut m, 3, 0)), (300, 300));
+    assert_eq!((gap(&mut m, 2, 2), gap(&mut m, 3, 2)), (200, 200));
+    m.run_ms(90);
+    assert_eq!(gap(&mut m, 2, 0), 300, "90 ms without a command: still running");
+    m.run_ms(1000);
+    for axis in [0, 2] {
+        assert_eq!((gap(&mut m, 2, axis), gap(&mut m, 3, axis)), (0, 0), "axis {axis} stopped");
+    }
+    // a command re-arms the heartbeat; the motor runs again
+    cmd(&mut m, op::ROR, 0, 0, 300);
+    m.run_ms(50);
+    assert_eq!(gap(&mut m, 2, 0), 300);
+    // SGP 68, 0 switches it off: no stop after a second of silence
+    cmd(&mut m, op::SGP, 68, 0, 0);
+    m.run_ms(1000);
+    assert_eq!((gap(&mut m, 2, 0), gap(&mut m, 3, 0)), (300, 300));
+}
+
+const SWITCH_INPUT_TARGET_IRQ: &str = r#"
+#include Interrupts.inc
+    VECT TI_STOPL1, StopL1
+    VECT TI_PIN2, Pin2
+    VECT TI_TARGET0, Target0
+    SGP TI_STOPL1, 3, 1     //left stop switch of axis 1: on pressing (rising)
+    SGP TI_PIN2, 3, 2       //IN2: on the falling edge
+    EI TI_STOPL1
+    EI TI_PIN2
+    EI TI_TARGET0
+    EI TI_GLOBAL
+    MVP ABS, 0, 2000
+Loop:
+    JA Loop
+
+StopL1:                     //user variable 10 counts the switch interrupts
+    GGP 10, 2
+    CALC ADD, 1
+    AGP 10, 2
+    RETI
+Pin2:                       //user variable 11 counts the input interrupts
+    GGP 11, 2
+    CALC ADD, 1
+    AGP 11, 2
+    RETI
+Target0:                    //user variable 12 = the position at "target reached"
+    GAP 1, 0
+    AGP 12, 2
+    RETI
+"#;
+
+/// Program interrupts from a stop switch (27..32), an input (39..46) and "target reached" (3..5)
+/// (manual §5.7 EI/VECT, bank 3 of SGP): each handler runs once per configured edge and not on
+/// the other edge; the target interrupt runs when axis 0 arrives at 2000.
+#[test]
+fn switch_input_and_target_interrupts_of_a_program() {
+    let code = assemble(SWITCH_INPUT_TARGET_IRQ);
+    let mut m = module();
+    start(&mut m, &code);
+    let var = |m: &mut Module<ModelChip>, n: u8| {
+        let (s, v) = m.execute(&Instruction::new(op::GGP, n, 2, 0), Origin::Direct);
+        assert_eq!(s, 100);
+        v
+    };
+    m.run_ms(20);
+    assert_eq!((var(&mut m, 10), var(&mut m, 11)), (0, 0));
+    // press and release the left switch of axis 1 twice: two interrupts (rising only)
+    for _ in 0..2 {
+        m.world.left_forced[1] = true;
+        m.run_ms(10);
+        m.world.left_forced[1] = false;
+        m.run_ms(10);
+    }
+    assert_eq!(var(&mut m, 10), 2);
+    // IN2 low then open (pull-up high) three times: three interrupts (falling only)
+    for _ in 0..3 {
+        m.io.driven[2] = Some(false);
+        m.run_ms(10);
+        m.io.driven[2] = None;
+        m.run_ms(10);
+    }
+    assert_eq!(var(&mut m, 11), 3);
+    assert_eq!(var(&mut m, 10), 2, "no switch interrupt from the inputs");
+    for _ in 0..500 {
+        if var(&mut m, 12) != 0 {
+            break;
+        }
+        m.run_ms(10);
+    }
+    assert_eq!(var(&mut m, 12), 2000);
+    assert_eq!(gap(&mut m, 1, 0), 2000);
+    assert_eq!(m.vm.state, AppState::Run);
 }
