@@ -162,49 +162,63 @@ pub struct Expected {
     probes: ffi::RtlProbes,
 }
 
+/// Builds a `$to` from the same-named fields of `$x`: the model's and the bridge's structs
+/// of pins and probes have the same fields (one list per struct, used in both directions).
+#[cfg(not(tmc429_no_rtl))]
+macro_rules! same_fields {
+    (outputs $($to:ident)::+, $x:expr) => {
+        $($to)::+ {
+            nint_sdo_c: $x.nint_sdo_c,
+            sdoz_c: $x.sdoz_c,
+            sdoz_c_oe: $x.sdoz_c_oe,
+            nscs_s: $x.nscs_s,
+            sck_s: $x.sck_s,
+            sdo_s: $x.sdo_s,
+            sdi_s_o: $x.sdi_s_o,
+            sdi_s_oe: $x.sdi_s_oe,
+            nscs2: $x.nscs2,
+            nscs3: $x.nscs3,
+            poscmp: $x.poscmp,
+        }
+    };
+    (motor $($to:ident)::+, $x:expr) => {
+        $($to)::+ {
+            x_target: $x.x_target,
+            x_actual: $x.x_actual,
+            v_internal: $x.v_internal,
+            v_target: $x.v_target,
+            a_actual: $x.a_actual,
+            ustep: $x.ustep,
+            step: $x.step,
+            dir: $x.dir,
+            pulse_acc: $x.pulse_acc,
+        }
+    };
+    (chain $($to:ident)::+, $x:expr) => {
+        $($to)::+ {
+            state: $x.state,
+            cell: $x.cell,
+            motor: $x.motor,
+            bit_count: $x.bit_count,
+            pending: $x.pending,
+            cover_waiting: $x.cover_waiting,
+            readback: $x.readback,
+        }
+    };
+}
+
 #[cfg(not(tmc429_no_rtl))]
 impl Expected {
     pub fn new(i: &Inputs, o: &Outputs, p: &Probes) -> Expected {
-        let m = |x: &MotorProbe| ffi::RtlMotorProbe {
-            x_target: x.x_target,
-            x_actual: x.x_actual,
-            v_internal: x.v_internal,
-            v_target: x.v_target,
-            a_actual: x.a_actual,
-            ustep: x.ustep,
-            step: x.step,
-            dir: x.dir,
-            pulse_acc: x.pulse_acc,
-        };
-        let c = &p.chain;
+        let m = |x: &MotorProbe| same_fields!(motor ffi::RtlMotorProbe, x);
         Expected {
             inp: rtl_inputs(i),
-            out: ffi::RtlOutputs {
-                nint_sdo_c: o.nint_sdo_c,
-                sdoz_c: o.sdoz_c,
-                sdoz_c_oe: o.sdoz_c_oe,
-                nscs_s: o.nscs_s,
-                sck_s: o.sck_s,
-                sdo_s: o.sdo_s,
-                sdi_s_o: o.sdi_s_o,
-                sdi_s_oe: o.sdi_s_oe,
-                nscs2: o.nscs2,
-                nscs3: o.nscs3,
-                poscmp: o.poscmp,
-            },
+            out: same_fields!(outputs ffi::RtlOutputs, o),
             probes: ffi::RtlProbes {
                 m0: m(&p.motor[0]),
                 m1: m(&p.motor[1]),
                 m2: m(&p.motor[2]),
-                chain: ffi::RtlChainProbe {
-                    state: c.state,
-                    cell: c.cell,
-                    motor: c.motor,
-                    bit_count: c.bit_count,
-                    pending: c.pending,
-                    cover_waiting: c.cover_waiting,
-                    readback: c.readback,
-                },
+                chain: same_fields!(chain ffi::RtlChainProbe, p.chain),
                 prescaler: p.prescaler,
                 power_down: p.power_down,
                 status: p.status,
@@ -238,46 +252,16 @@ fn rtl_inputs(i: &Inputs) -> ffi::RtlInputs {
 #[cfg(not(tmc429_no_rtl))]
 #[inline]
 fn outputs(o: &ffi::RtlOutputs) -> Outputs {
-    Outputs {
-        nint_sdo_c: o.nint_sdo_c,
-        sdoz_c: o.sdoz_c,
-        sdoz_c_oe: o.sdoz_c_oe,
-        nscs_s: o.nscs_s,
-        sck_s: o.sck_s,
-        sdo_s: o.sdo_s,
-        sdi_s_o: o.sdi_s_o,
-        sdi_s_oe: o.sdi_s_oe,
-        nscs2: o.nscs2,
-        nscs3: o.nscs3,
-        poscmp: o.poscmp,
-    }
+    same_fields!(outputs Outputs, o)
 }
 
 #[cfg(not(tmc429_no_rtl))]
 #[inline]
 fn probes(p: &ffi::RtlProbes) -> Probes {
-    let m = |x: &ffi::RtlMotorProbe| MotorProbe {
-        x_target: x.x_target,
-        x_actual: x.x_actual,
-        v_internal: x.v_internal,
-        v_target: x.v_target,
-        a_actual: x.a_actual,
-        ustep: x.ustep,
-        step: x.step,
-        dir: x.dir,
-        pulse_acc: x.pulse_acc,
-    };
+    let m = |x: &ffi::RtlMotorProbe| same_fields!(motor MotorProbe, x);
     Probes {
         motor: [m(&p.m0), m(&p.m1), m(&p.m2)],
-        chain: ChainProbe {
-            state: p.chain.state,
-            cell: p.chain.cell,
-            motor: p.chain.motor,
-            bit_count: p.chain.bit_count,
-            pending: p.chain.pending,
-            cover_waiting: p.chain.cover_waiting,
-            readback: p.chain.readback,
-        },
+        chain: same_fields!(chain ChainProbe, p.chain),
         prescaler: p.prescaler,
         power_down: p.power_down,
         status: p.status,
