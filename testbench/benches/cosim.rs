@@ -7,9 +7,10 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 
 use tmc429_model::{Chip, Inputs, Tmc429};
-use tmc429_testbench::pair::{run_pair, Step, BATCH};
+use tmc429_testbench::pair::{run_pair, BATCH};
 use tmc429_testbench::signals::{agree, Compare};
 use tmc429_testbench::stimulus::{Driver, Profile, Stimulus};
+use tmc429_testbench::rtl::Expected;
 use tmc429_testbench::{run, Config, Rtl, Variant};
 
 const CYCLES: usize = 200_000;
@@ -55,7 +56,7 @@ fn bench(c: &mut Criterion) {
                 let Some(chunk) = rest.next() else { return false };
                 for i in chunk {
                     let out = model.tick(i);
-                    buf.push(Step { inp: *i, out, probes: model.probes() });
+                    buf.push(Expected::new(i, &out, &model.probes()));
                 }
                 true
             })

@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 use tmc429_model::{Chip, Inputs, Outputs, Probes, Tmc429};
 
 use crate::coverage::{reg_name, Coverage};
-use crate::pair::{run_pair, Step, BATCH};
-use crate::rtl::{Rtl, Variant};
+use crate::pair::{run_pair, BATCH};
+use crate::rtl::{Expected, Rtl, Variant};
 use crate::signals::{agree, diff, flatten, format_value, Compare, Diff};
 use crate::stimulus::{Driver, Event, Frame, PinLevels, Profile, Stimulus, Txn};
 use crate::trace::TraceWriter;
@@ -424,7 +424,7 @@ fn simulate_pair(cfg: &Config) -> Result<Outcome, String> {
         let end = (n + BATCH as u64).min(cfg.cycles);
         while n < end {
             let (inp, probes, _) = side.step(n, None);
-            buf.push(Step { inp, out: side.mo, probes });
+            buf.push(Expected::new(&inp, &side.mo, &probes));
             n += 1;
         }
         n < cfg.cycles

@@ -3,17 +3,18 @@
 //! The stimulus is open-loop ([`crate::stimulus::Stimulus::next_txn`] never reads an output),
 //! so the model side — stimulus, pin driver, golden model, coverage — can run ahead of the RTL.
 //! [`run_pair`] runs the model side on the calling thread and the Verilated RTL on a second
-//! thread; the model side hands over batches of [`Step`]s (the inputs of one edge and the
-//! model's outputs and probes after it, turned into the bridge's layout on the model side:
-//! [`Expected`]) through a bounded channel, and the RTL side applies the same inputs and compares
+//! thread; the model side hands over batches of [`Expected`] (the inputs of one edge and the
+//! model's outputs and probes after it, in the bridge's layout, made on the model side) through
+//! a bounded channel, and the RTL side applies the same inputs and compares
 //! every cycle under the [`Compare`] mask, exactly as the single-thread loop does (inside the
-//! bridge while the states are equal: [`Rtl::tick_agrees`]). It stops at the first disagreement and reports only its cycle: the caller makes
+//! bridge while the states are equal: [`Rtl::tick_agrees`]). It stops at the first
+//! disagreement and reports only its cycle: the caller makes
 //! the full report by running the single-thread loop again (the stimulus is seeded), so the
 //! report is the same whichever way the run was made.
 
 use std::sync::mpsc::{sync_channel, TryRecvError};
 
-use tmc429_model::{Inputs, Outputs, Probes};
+use tmc429_model::{Outputs, Probes};
 
 use crate::rtl::{Expected, Rtl, Variant};
 use crate::signals::{agree, Compare};
@@ -26,18 +27,10 @@ pub const BATCH: usize = 1024;
 /// that on a busy machine the RTL thread can go on while the model thread waits for a core.
 const DEPTH: usize = 16;
 
-/// One CLK edge of the model side: the inputs applied before it and the model's outputs and
-/// probes after it.
-#[derive(Clone, Copy, Debug)]
-pub struct Step {
-    pub inp: Inputs,
-    pub out: Outputs,
-    pub probes: Probes,
-}
-
 /// Runs the model side (`fill`, on this thread) and the RTL of `variant` (on a second thread)
 /// in lock-step. `reset`: the model's outputs and probes before the first edge. `fill` appends
-/// the next steps to its (empty) argument — any number, usually [`BATCH`] — and returns whether
+/// the next edges to its (empty) argument, each as [`Expected::new`] of its inputs and the
+/// model's outputs and probes after it — any number, usually [`BATCH`] — and returns whether
 /// more follow; it is not called again after a mismatch was found.
 ///
 /// Returns the first cycle whose states differ under `compare` (1 = the first edge, 0 = the
@@ -45,12 +38,11 @@ pub struct Step {
 /// without Verilator: [`crate::rtl::MISSING`]).
 pub fn run_pair<F>(variant: Variant, compare: Compare, reset: (Outputs, Probes), mut fill: F) -> Result<Option<u64>, String>
 where
-    F: FnMut(&mut Vec<Step>) -> bool,
+    F: FnMut(&mut Vec<Expected>) -> bool,
 {
     let (tx, rx) = sync_channel::<Vec<Expected>>(DEPTH);
     // emptied batches go back to the model side, so that no batch is allocated per round
     let (back_tx, back_rx) = sync_channel::<Vec<Expected>>(DEPTH + 2);
-    let mut steps = Vec::with_capacity(BATCH);
     std::thread::scope(|s| {
         let rtl_side = s.spawn(move || -> Result<Option<u64>, String> {
             let mut rtl = Rtl::try_new(variant)?;
@@ -75,10 +67,7 @@ where
                 Err(TryRecvError::Empty | TryRecvError::Disconnected) => Vec::with_capacity(BATCH),
             };
             buf.clear();
-            steps.clear();
-            let more = fill(&mut steps);
-            // the bridge's layout is made here, on the model side's thread
-            buf.extend(steps.iter().map(|st| Expected::new(&st.inp, &st.out, &st.probes)));
+            let more = fill(&mut buf);
             // a send fails when the RTL side has stopped (mismatch or error)
             if (!buf.is_empty() && tx.send(buf).is_err()) || !more {
                 break;
