@@ -67,13 +67,13 @@ module tmc429_top #(
     wire [2:0] ref_q, refr_q;
     wire       sdi_s_q;
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [6:0] in_h;    // history flops: the edge detectors live in the motion core
+    wire [6:0] in_s, in_h;  // first stages, history flops: the edge detectors live in the motion core
     /* verilator lint_on UNUSEDSIGNAL */
 
     tmc429_sync #(.W(7), .RST(7'b1110000)) u_sync_in (
         .clk(clk), .rst(rst),
         .d({refr3, refr2, refr1, ref3, ref2, ref1, sdi_s}),
-        .q({refr_q, ref_q, sdi_s_q}), .h(in_h));
+        .s(in_s), .q({refr_q, ref_q, sdi_s_q}), .h(in_h));
 
     // ---- µC SPI slave --------------------------------------------------------------------
     wire [7:0]  status;
