@@ -43,6 +43,8 @@ module tmc429_regfile #(
     // driver side: configuration (old state, and new state for the output pin registers)
     output wire [23:0] drv_gconf,      // $7E as stored: mot1r refmux 000 cont_update clk2_div bits 7..0
     output wire [23:0] drv_gconf_nx,
+    output wire        drv_gconf_we,   // a write of $7E executes in this edge
+    output wire [23:0] drv_gconf_wd,   // $7E as that write stores it
     output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
     output wire [8:0]  drv_ifconf_nx,
     output wire [59:0] drv_conf,       // motor m in [20m+19:20m]: {is_*, a_threshold}
@@ -206,10 +208,10 @@ module tmc429_regfile #(
     wire w_gconf  = wr_g & (jdx == 4'd15);
     wire w_ifconf = wr_g & HAS_429 & (jdx == 4'd4);
     assign drv_gconf     = {2'd0, mot1r, refmux, 3'd0, cont_update, clk2_div, gp_low};
-    assign drv_gconf_nx  = w_gconf
-        ? ((CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
-                       : {2'd0, wdata[21:20], 3'd0, wdata[16:0]})
-        : drv_gconf;
+    assign drv_gconf_we  = w_gconf;
+    assign drv_gconf_wd  = (CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
+                                       : {2'd0, wdata[21:20], 3'd0, wdata[16:0]};
+    assign drv_gconf_nx  = w_gconf ? drv_gconf_wd : drv_gconf;
     assign drv_ifconf    = if_conf;
     assign drv_ifconf_nx = w_ifconf ? wdata[8:0] : if_conf;
     assign drv_cw        = cw;
