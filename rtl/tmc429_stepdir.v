@@ -47,13 +47,18 @@ module tmc429_stepdir (
     wire        neg    = s_pos ? (backlog[23] & ~b_m1)
                                 : (s_neg ? (backlog[23] | b_z) : backlog[23]);     // b < 0
     wire        bl_nz  = ~(s_pos ? b_m1 : (s_neg ? b_p1 : b_z));                    // b != 0
-    wire        hold   = (state != READY) && (cnt > 9'd1);
+    // hold = state != READY and cnt > 1, a register formed with the next state: a counting
+    // state keeps it while cnt > 2, a pulse / space / DIR set-up starts with cnt = T >= 16
+    reg         hold;
     wire        pend   = (state == PULSE) && !step_half;
     wire        take   = ~hold & ~pend & bl_nz & (neg == dir);
     wire [2:0]  s_d    = s_pos ? 3'd1 : (s_neg ? 3'd7 : 3'd0);
     wire [2:0]  t_d    = take ? (neg ? 3'd1 : 3'd7) : 3'd0;
     wire [2:0]  dlt    = s_d + t_d;                                                 // -2..2
     wire [23:0] bl     = backlog + {{21{dlt[2]}}, dlt};
+
+    wire        hold_n = ~run ? hold
+                       : (~en ? 1'b0 : (hold ? (cnt > 9'd2) : (pend | bl_nz)));
 
     always @(*) begin
         state_n   = state;
@@ -97,12 +102,14 @@ module tmc429_stepdir (
         if (rst) begin
             state   <= READY;
             cnt     <= 9'd0;
+            hold    <= 1'b0;
             backlog <= 24'd0;
             step    <= 1'b0;
             dir     <= 1'b0;
         end else begin
             state   <= state_n;
             cnt     <= cnt_n;
+            hold    <= hold_n;
             backlog <= backlog_n;
             step    <= step_n;
             dir     <= dir_n;
