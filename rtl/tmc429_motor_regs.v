@@ -143,11 +143,9 @@ module tmc429_motor_regs #(
     // read value of the state (C21-C27); the bits a µC write sets come from the shadow RAM
     // of the register file and are 0 here (IDX 10: lp only; IDX 11: int_flags only). The IDX
     // is one-hot, so the multiplexer is an AND-OR.
-    // v_actual = V >> 8 rounded toward 0 (C42): V[19:8] and the rounding carry (V < 0 with a
-    // nonzero fraction) in bit 12; the register file adds them after the motor mux
+    // v_actual (IDX 5, C42) is formed in the register file from V of the selected motor
     assign rdata = ({24{rsel[1]}} & x_actual)
                  | ({24{rsel[4]}} & {12'd0, v_target})
-                 | ({24{rsel[5]}} & {11'd0, v[19] & (v[7:0] != 8'd0), v[19:8]})
                  | ({24{rsel[7]}} & {12'd0, a_actual})
                  | ({24{rsel[10]}} & {7'd0, lp, 16'd0})
                  | ({24{rsel[11]}} & {16'd0, int_flags})

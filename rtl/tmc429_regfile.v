@@ -414,10 +414,12 @@ module tmc429_regfile #(
                         | ({24{rq_mot[1]}} & m_rdata[47:24])
                         | ({24{rq_mot[2]}} & m_rdata[71:48])
                         | ({24{rq_glb}} & st_glb);
-    // IDX 5 (v_actual): the motor's read data carries V[19:8] and the rounding carry in bit
-    // 12 (tmc429_motor_regs); one incrementer serves the three motors
-    wire        va_c   = rq_va & st_data[12];
-    wire [23:0] st_va  = {st_data[23:13], st_data[12] & ~rq_va, st_data[11:0] + {11'd0, va_c}};
+    // IDX 5 (v_actual = V >> 8 rounded toward 0, C42): V of the selected motor, one
+    // incrementer for the three motors on this path only
+    wire [19:0] v_sel  = ({20{rq_mot[0]}} & p_v[19:0]) | ({20{rq_mot[1]}} & p_v[39:20])
+                       | ({20{rq_mot[2]}} & p_v[59:40]);
+    wire [11:0] v_rd   = v_sel[19:8] + {11'd0, v_sel[19] & (v_sel[7:0] != 8'd0)};
+    wire [23:0] st_va  = st_data | {12'd0, {12{rq_va}} & v_rd};
     always @(*) begin
         if (rq_ram)
             rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
