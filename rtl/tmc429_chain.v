@@ -270,9 +270,11 @@ module tmc429_chain (
         end
     end
 
-    // snapshot, cover latch, bit pipeline: no reset needed (written before use)
+    // snapshot, cover latch, bit pipeline: no reset needed (written before use). The snapshot
+    // and the cover latch load in every edge that may start a datagram (can_start), so the
+    // last load before a datagram is its start edge; they are read only while one runs.
     always @(posedge clk) begin
-        if (start) begin
+        if (can_start) begin
             snap_w    <= ustep;
             snap_is   <= i_scale;
             snap_dir  <= dir;
