@@ -116,9 +116,13 @@ module tmc429_regfile #(
             if (!frame[k])
                 ones_d = k[3:0];
     end
+    // The ticks include run of the edge after (powered down the motion core has no tick):
+    // power_down after this edge = a write of it in this edge, else the waking frame start
+    // clears it (C66).
     wire [4:0] ph      = prescaler[4:0];
-    wire ph_ramp_nx  = run ? (ph == 5'd29) : (ph == 5'd30);
-    wire ph_pulse_nx = run ? (ph == 5'd30) : (ph == 5'd31);
+    wire pd_nx       = (wr_g & (jdx == 4'd8)) | (pd & ~frame_start);
+    wire ph_ramp_nx  = ~pd_nx & (run ? (ph == 5'd29) : (ph == 5'd30));
+    wire ph_pulse_nx = ~pd_nx & (run ? (ph == 5'd30) : (ph == 5'd31));
 
     // ---- read address decode (C10) ---------------------------------------------------------
     // The address is complete in the SPI input register from the edge after the 7th bit, and
