@@ -239,28 +239,42 @@ module tmc429_vtarget #(
     end
 
     wire        m_soft = b_load ? l_soft : (b_rm == 2'd1);
-    wire [27:0] src    = b_load ? (l_skip ? {acc[20:0], 7'd0} : acc[28:1]) : sr;
-    wire [12:0] rem_in = b_load ? 13'd0 : rem;
-    wire [11:0] y_in   = b_load ? 12'd0 : y;
-    wire        st_in  = b_load ? (l_skip & (acc[27:21] != 7'd0)) : sticky;
+    wire [27:0] src_l  = l_skip ? {acc[20:0], 7'd0} : acc[28:1];   // radicand at the load
+    wire [23:0] sr_nx  = b_load ? src_l[23:0] : sr[23:0];          // the bits after these four
+    wire        st_l   = l_skip & (acc[27:21] != 7'd0);
     wire        step   = b_load | (b_k < b_ne);
 
     // two restoring square-root steps; the remainder stays below 2^13 unless the result
-    // saturates (sticky), so bits 14:13 of a difference that is kept are 0
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [15:0] t1   = {1'b0, rem_in, src[27:26]} - {2'b00, y_in, 2'b01};
-    wire        ge1  = ~t1[15];
-    wire [12:0] r1   = ge1 ? t1[12:0] : {rem_in[10:0], src[27:26]};
-    wire [11:0] y1   = {y_in[10:0], ge1};
-    wire [15:0] t2   = {1'b0, r1, src[25:24]} - {2'b00, y1, 2'b01};
-    wire        ge2  = ~t2[15];
-    wire [12:0] r2   = ge2 ? t2[12:0] : {r1[10:0], src[25:24]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [11:0] y2   = {y1[10:0], ge2};
-    wire        st_q = st_in | y_in[11] | y_in[10];
+    // saturates (sticky), so bits 14:13 of a difference that is kept are 0. They are formed
+    // for the running state (rem, y, sr) and for the load (remainder and result 0, which
+    // folds to a small function of four radicand bits) side by side, and the load selects
+    // after them, so the subtractions start at flip-flops.
+    function [24:0] sqrt2;          // {r2, y2}
+        input [12:0] rem_in;
+        input [11:0] y_in;
+        input [3:0]  s4;
+        /* verilator lint_off UNUSEDSIGNAL */   // bits 14:13 of a kept difference are 0
+        reg   [15:0] t1, t2;
+        /* verilator lint_on UNUSEDSIGNAL */
+        reg   [12:0] r1, r2;
+        reg   [11:0] y1;
+        begin
+            t1 = {1'b0, rem_in, s4[3:2]} - {2'b00, y_in, 2'b01};
+            r1 = ~t1[15] ? t1[12:0] : {rem_in[10:0], s4[3:2]};
+            y1 = {y_in[10:0], ~t1[15]};
+            t2 = {1'b0, r1, s4[1:0]} - {2'b00, y1, 2'b01};
+            r2 = ~t2[15] ? t2[12:0] : {r1[10:0], s4[1:0]};
+            sqrt2 = {r2, y1[10:0], ~t2[15]};
+        end
+    endfunction
+    wire [24:0] q_run = sqrt2(rem, y, sr[27:24]);
+    wire [24:0] q_ld  = sqrt2(13'd0, 12'd0, src_l[27:24]);
+    wire [12:0] r2    = b_load ? q_ld[24:12] : q_run[24:12];
+    wire [11:0] y2    = b_load ? q_ld[11:0] : q_run[11:0];
+    wire        st_q  = b_load ? st_l : (sticky | y[11] | y[10]);
     // SOFT_MODE: four bits shifted into y
-    wire [11:0] y_p  = {y_in[7:0], src[27:24]};
-    wire        st_p = st_in | (y_in[11:8] != 4'd0);
+    wire [11:0] y_p   = b_load ? {8'd0, src_l[27:24]} : {y[7:0], sr[27:24]};
+    wire        st_p  = b_load ? st_l : (sticky | (y[11:8] != 4'd0));
 
     always @(posedge clk) begin
         if (rst) begin
@@ -275,7 +289,7 @@ module tmc429_vtarget #(
                 b_sgn <= a_sgn; b_zero <= a_zero; b_odd <= l_odd; b_ne <= l_ne;
             end
             if (b_run & step) begin
-                sr <= {src[23:0], 4'd0};
+                sr <= {sr_nx, 4'd0};
                 if (m_soft) begin
                     y <= y_p;
                     sticky <= st_p;
