@@ -47,7 +47,8 @@ module tmc429_chain (
     input  wire [8:0]  i_scale,        // selected current scales {m2, m1, m0}
     input  wire [2:0]  ramp_tick,      // ramp ticks of this edge (C40)
     // global registers, old state
-    input  wire [7:0]  clk2_div_nx,    // clk2_div of the new state (timing registers)
+    input  wire        clk2_div_we,    // a µC write stores clk2_div_wd in this edge
+    input  wire [7:0]  clk2_div_wd,    // clk2_div as that write stores it (timing registers)
     input  wire [1:0]  lsmd,
     input  wire        pol_ph_ab,
     input  wire        pol_fd_ab,
@@ -89,16 +90,19 @@ module tmc429_chain (
                CSOFF = 3'd6;
 
     // ---- SCK_S timing (C81), registered: the values of the current clk2_div --------------
-    wire [8:0] nx_lo  = {1'b0, clk2_div_nx} + 9'd1;
-    wire [8:0] nx_hi  = (clk2_div_nx >= 8'd7) ? nx_lo : (9'd15 - {1'b0, clk2_div_nx});
+    // clk2_div changes only by a µC write, so the registers load at that write, from the
+    // written data (the SPI input register) while the write decode only enables them
+    wire [7:0] wd     = clk2_div_wd;
+    wire [8:0] nx_lo  = {1'b0, wd} + 9'd1;
+    wire [8:0] nx_hi  = (wd >= 8'd7) ? nx_lo : (9'd15 - {1'b0, wd});
     wire [9:0] nx_p   = {1'b0, nx_lo} + {1'b0, nx_hi};
-    wire [9:0] nx_gap = (clk2_div_nx <= 8'd7) ? nx_p : ({1'b0, nx_lo} + {nx_lo, 1'b0});
+    wire [9:0] nx_gap = (wd <= 8'd7) ? nx_p : ({1'b0, nx_lo} + {nx_lo, 1'b0});
     reg  [8:0] t_lo, t_hi;
     reg  [9:0] t_p, t_gap;
     always @(posedge clk) begin
         if (rst) begin
             t_lo <= 9'd16;  t_hi <= 9'd16;  t_p <= 10'd32;  t_gap <= 10'd48;   // clk2_div 15
-        end else begin
+        end else if (clk2_div_we) begin
             t_lo <= nx_lo;  t_hi <= nx_hi;  t_p <= nx_p;  t_gap <= nx_gap;
         end
     end

@@ -13,6 +13,10 @@
 // refmux = 1 in SPI mode (C87): at an edge where the nSCS_S pin rises the synchronized
 // REF1..3 (after inv_ref) are stored as the left switches, where it falls as the right ones
 // (the 74HC157 presents the left switches while nSCS_S is high, the right ones while low).
+// The sample is applied one edge late from registers (the pin before and after the edge,
+// REF and the enable of that edge) and `mux_sw` shows it in the meantime through a
+// multiplexer, so it reads exactly as if stored in that edge while the pin's next level
+// does not reach a switch register in one cycle.
 `default_nettype none
 
 module tmc429_drvpins #(
@@ -47,7 +51,7 @@ module tmc429_drvpins #(
     output reg        nscs2,
     output reg        nscs3,
     // switches sampled through the 74HC157: bit 2m = R(m+1), bit 2m+1 = L(m+1)
-    output reg  [5:0] mux_sw
+    output wire [5:0] mux_sw
 );
     // ---- pin levels of the new state ---------------------------------------------------------
     reg p_nscs_s, p_sck_s, p_sdo_s, p_sdi_s_o, p_sdi_s_oe, p_nscs2, p_nscs3;
@@ -83,22 +87,28 @@ module tmc429_drvpins #(
 
     wire [2:0] ref_i = ref_q ^ {3{inv_ref & (CHIP != 0)}};
 
+    // the sample of the last edge (C87): the pin changed in it while refmux was on
+    reg        nscs_prev, smp_en;
+    reg  [2:0] smp_ref;
+    reg  [5:0] mux_sw_r;
+    wire       smp  = smp_en & (nscs_s != nscs_prev);
+    assign mux_sw = ~smp ? mux_sw_r
+                  : (nscs_prev ? {smp_ref[2], mux_sw_r[4], smp_ref[1], mux_sw_r[2], smp_ref[0], mux_sw_r[0]}
+                               : {mux_sw_r[5], smp_ref[2], mux_sw_r[3], smp_ref[1], mux_sw_r[1], smp_ref[0]});
+
     always @(posedge clk) begin
         if (rst) begin
             nscs_s <= 1'b1;  sck_s <= 1'b1;  sdo_s <= (CHIP == 2);
             sdi_s_o <= 1'b0;  sdi_s_oe <= 1'b0;  nscs2 <= 1'b1;  nscs3 <= 1'b1;
-            mux_sw <= 6'd0;
+            nscs_prev <= 1'b1;  smp_en <= 1'b0;  smp_ref <= 3'd0;  mux_sw_r <= 6'd0;
         end else begin
             nscs_s <= p_nscs_s;  sck_s <= p_sck_s;  sdo_s <= p_sdo_s;
             sdi_s_o <= p_sdi_s_o;  sdi_s_oe <= p_sdi_s_oe;  nscs2 <= p_nscs2;  nscs3 <= p_nscs3;
-            if (spi & refmux & (p_nscs_s != nscs_s)) begin
-                if (nscs_s) begin
-                    // the pin was high: the left switches were presented
-                    mux_sw[1] <= ref_i[0];  mux_sw[3] <= ref_i[1];  mux_sw[5] <= ref_i[2];
-                end else begin
-                    mux_sw[0] <= ref_i[0];  mux_sw[2] <= ref_i[1];  mux_sw[4] <= ref_i[2];
-                end
-            end
+            // at an edge where the pin changes: a high pin presented the left switches
+            nscs_prev <= nscs_s;
+            smp_en    <= spi & refmux;
+            smp_ref   <= ref_i;
+            mux_sw_r  <= mux_sw;
         end
     end
 endmodule

@@ -43,6 +43,8 @@ module tmc429_regfile #(
     // driver side: configuration (old state, and new state for the output pin registers)
     output wire [23:0] drv_gconf,      // $7E as stored: mot1r refmux 000 cont_update clk2_div bits 7..0
     output wire [23:0] drv_gconf_nx,
+    output wire        drv_gconf_we,   // a write of $7E executes in this edge
+    output wire [23:0] drv_gconf_wd,   // $7E as that write stores it
     output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
     output wire [8:0]  drv_ifconf_nx,
     output wire [59:0] drv_conf,       // motor m in [20m+19:20m]: {is_*, a_threshold}
@@ -101,11 +103,12 @@ module tmc429_regfile #(
         .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
 
     // ---- frame schedule (C40, C41) ----------------------------------------------------
-    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. The count
-    // is registered: the frame number of a phase-30 or -31 edge is the one of the edge before
-    // (the frame changes only after phase 31; powered down, the prescaler holds).
+    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. The ticks
+    // are registers formed one edge ahead: the phase after this edge is p + run, the frame
+    // does not change from phase 29 to 30 or 30 to 31 (nor while powered down), and the
+    // divider after this edge is the one a µC write of IDX 12 in this edge stores.
     wire [14:0] frame = prescaler[19:5];
-    reg  [3:0]  ones_d, ones;
+    reg  [3:0]  ones_d;
     integer k;
     always @(*) begin
         ones_d = 4'd15;
@@ -113,14 +116,9 @@ module tmc429_regfile #(
             if (!frame[k])
                 ones_d = k[3:0];
     end
-    always @(posedge clk) begin
-        if (rst)
-            ones <= 4'd0;
-        else
-            ones <= ones_d;
-    end
-    wire ph_ramp  = prescaler[4:0] == 5'd30;
-    wire ph_pulse = prescaler[4:0] == 5'd31;
+    wire [4:0] ph      = prescaler[4:0];
+    wire ph_ramp_nx  = run ? (ph == 5'd29) : (ph == 5'd30);
+    wire ph_pulse_nx = run ? (ph == 5'd30) : (ph == 5'd31);
 
     // ---- motors -----------------------------------------------------------------------
     wire [71:0] m_rdata;      // read data of motor m in [24m+23:24m]
@@ -131,21 +129,32 @@ module tmc429_regfile #(
     wire [5:0]  m_rm;
     wire [11:0] m_pulse_div, m_ramp_div;
     wire [35:0] m_vt;
-    wire [2:0]  ramp_tick;
+    reg  [2:0]  ramp_tick, pulse_tick;
     assign drv_ramp_tick = ramp_tick;
 
     genvar g;
     generate
         for (g = 0; g < 3; g = g + 1) begin : mot
             wire present = (g == 0) | m_present1;
-            assign ramp_tick[g] = ph_ramp & (ones >= m_ramp_div[4*g+3:4*g]);
+            wire w_div = wr & present & (a7[6:4] == g) & (jdx == 4'd12);
+            wire [3:0] rdiv_nx = w_div ? wdata[11:8] : m_ramp_div[4*g+3:4*g];
+            wire [3:0] pdiv_nx = w_div ? wdata[15:12] : m_pulse_div[4*g+3:4*g];
+            always @(posedge clk) begin
+                if (rst) begin
+                    ramp_tick[g] <= 1'b0;
+                    pulse_tick[g] <= 1'b0;
+                end else begin
+                    ramp_tick[g] <= ph_ramp_nx & (ones_d >= rdiv_nx);
+                    pulse_tick[g] <= ph_pulse_nx & (ones_d >= pdiv_nx);
+                end
+            end
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & present),
                 .we(wr & present & (a7[6:4] == g)), .widx(a7[3:0]), .wdata(wdata),
                 .ridx(rd_addr[3:0]), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
                 .ramp_tick(ramp_tick[g]),
-                .pulse_tick(ph_pulse & (ones >= m_pulse_div[4*g+3:4*g])),
+                .pulse_tick(pulse_tick[g]),
                 .vt(m_vt[12*g+11:12*g]),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
@@ -199,10 +208,10 @@ module tmc429_regfile #(
     wire w_gconf  = wr_g & (jdx == 4'd15);
     wire w_ifconf = wr_g & HAS_429 & (jdx == 4'd4);
     assign drv_gconf     = {2'd0, mot1r, refmux, 3'd0, cont_update, clk2_div, gp_low};
-    assign drv_gconf_nx  = w_gconf
-        ? ((CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
-                       : {2'd0, wdata[21:20], 3'd0, wdata[16:0]})
-        : drv_gconf;
+    assign drv_gconf_we  = w_gconf;
+    assign drv_gconf_wd  = (CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
+                                       : {2'd0, wdata[21:20], 3'd0, wdata[16:0]};
+    assign drv_gconf_nx  = w_gconf ? drv_gconf_wd : drv_gconf;
     assign drv_ifconf    = if_conf;
     assign drv_ifconf_nx = w_ifconf ? wdata[8:0] : if_conf;
     assign drv_cw        = cw;

@@ -8,7 +8,7 @@
 // next falling edge. Each synchronized falling SCK_C edge after the first bit shifts the
 // output register left (the first falling edge presents bit 31, already on the pin). An SCK_C
 // edge in the cycle of the nSCS_C falling edge is ignored (C13). At the synchronized
-// rising edge of nSCS_C a frame of exactly 32 bits is executed (`exec` pulse).
+// rising edge of nSCS_C a frame of exactly 32 bits is executed (`exec` pulse, a register).
 `default_nettype none
 
 module tmc429_spi_slave (
@@ -35,24 +35,24 @@ module tmc429_spi_slave (
     // current data bit
     output wire        sdo
 );
-    wire nscs_q, nscs_h, sck_q, sck_h, sdi_q;
+    wire nscs_s, nscs_q, nscs_h, sck_q, sck_h, sdi_q;
     /* verilator lint_off UNUSEDSIGNAL */
-    wire sdi_h;   // SDI_C is sampled, not edge-detected: its history flop is unused
+    wire sck_s, sdi_s, sdi_h;   // SDI_C is sampled, not edge-detected: its history flop is unused
     /* verilator lint_on UNUSEDSIGNAL */
 
     tmc429_sync #(.W(1), .RST(1'b1)) u_sync_nscs (
-        .clk(clk), .rst(rst), .d(nscs_c), .q(nscs_q), .h(nscs_h));
+        .clk(clk), .rst(rst), .d(nscs_c), .s(nscs_s), .q(nscs_q), .h(nscs_h));
     tmc429_sync #(.W(1), .RST(1'b1)) u_sync_sck (
-        .clk(clk), .rst(rst), .d(sck_c), .q(sck_q), .h(sck_h));
+        .clk(clk), .rst(rst), .d(sck_c), .s(sck_s), .q(sck_q), .h(sck_h));
     tmc429_sync #(.W(1), .RST(1'b0)) u_sync_sdi (
-        .clk(clk), .rst(rst), .d(sdi_c), .q(sdi_q), .h(sdi_h));
+        .clk(clk), .rst(rst), .d(sdi_c), .s(sdi_s), .q(sdi_q), .h(sdi_h));
 
     reg [31:0] in_sr;
     reg [31:0] out_sr;
     reg [5:0]  cnt;
+    reg        exec_q;
 
     wire nscs_fall = ~nscs_q & nscs_h;
-    wire nscs_rise = nscs_q & ~nscs_h;
     wire sel       = ~nscs_q & ~nscs_h;   // low, and not the cycle of the falling edge (C13)
     wire sck_rise  = sel & sck_q & ~sck_h;
     // the first falling edge presents bit 31, which is already out (SPI mode 3)
@@ -65,10 +65,22 @@ module tmc429_spi_slave (
     assign rd_addr     = in_next[7:1];
     assign rd_addr_q   = in_sr[5:0];
     assign frame_start = nscs_fall;
-    assign exec        = nscs_rise & (cnt == 6'd32);
+    assign exec        = exec_q;
     assign cmd         = in_sr;
     assign active      = ~nscs_h;
     assign sdo         = out_sr[31];
+
+    // exec = nscs_rise & (cnt == 32) of the old state, formed one edge ahead into a register:
+    // after this edge nscs_q is the first stage's level and nscs_h the present nscs_q, and the
+    // counter is cnt_nx (the write decode behind exec then starts at a flip-flop)
+    wire [5:0]  cnt_nx  = nscs_fall ? 6'd0
+                        : ((sck_rise & (cnt != 6'd63)) ? cnt + 6'd1 : cnt);
+    always @(posedge clk) begin
+        if (rst)
+            exec_q <= 1'b0;
+        else
+            exec_q <= nscs_s & ~nscs_q & (cnt_nx == 6'd32);
+    end
 
     always @(posedge clk) begin
         if (rst) begin

@@ -3,6 +3,8 @@
 // An input level applied before CLK edge t appears on `q` after edge t+1 and on `h`
 // after edge t+2; an edge is detected between `q` and `h`, so it is acted on at edge
 // t+2. The synchronizers run in power down as well (only the units behind them stop).
+// `s` is the first stage: the level `q` takes at the next edge, for a unit that forms an
+// edge-detect one edge ahead into a register (it must not be used as a level).
 `default_nettype none
 
 module tmc429_sync #(
@@ -12,19 +14,18 @@ module tmc429_sync #(
     input  wire         clk,
     input  wire         rst,
     input  wire [W-1:0] d,
+    output reg  [W-1:0] s,
     output reg  [W-1:0] q,
     output reg  [W-1:0] h
 );
-    reg [W-1:0] s1;
-
     always @(posedge clk) begin
         if (rst) begin
-            s1 <= RST;
+            s  <= RST;
             q  <= RST;
             h  <= RST;
         end else begin
-            s1 <= d;
-            q  <= s1;
+            s  <= d;
+            q  <= s;
             h  <= q;
         end
     end

@@ -67,13 +67,13 @@ module tmc429_top #(
     wire [2:0] ref_q, refr_q;
     wire       sdi_s_q;
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [6:0] in_h;    // history flops: the edge detectors live in the motion core
+    wire [6:0] in_s, in_h;  // first stages, history flops: the edge detectors live in the motion core
     /* verilator lint_on UNUSEDSIGNAL */
 
     tmc429_sync #(.W(7), .RST(7'b1110000)) u_sync_in (
         .clk(clk), .rst(rst),
         .d({refr3, refr2, refr1, ref3, ref2, ref1, sdi_s}),
-        .q({refr_q, ref_q, sdi_s_q}), .h(in_h));
+        .s(in_s), .q({refr_q, ref_q, sdi_s_q}), .h(in_h));
 
     // ---- µC SPI slave --------------------------------------------------------------------
     wire [7:0]  status;
@@ -101,7 +101,8 @@ module tmc429_top #(
     wire [2:0]  p_step, p_dir;
     // driver side <-> register file (whole registers; the driver side uses some fields)
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [23:0] gconf, gconf_nx;
+    wire [23:0] gconf, gconf_nx, gconf_wd;
+    wire        gconf_we;
     wire [8:0]  ifconf, ifconf_nx;
     /* verilator lint_on UNUSEDSIGNAL */
     wire [59:0] drv_conf;
@@ -124,7 +125,8 @@ module tmc429_top #(
         .p_x_target(p_x_target), .p_x_actual(p_x_actual), .p_v(p_v),
         .p_v_target(p_v_target), .p_a_actual(p_a_actual), .p_ustep(p_ustep),
         .p_pulse_acc(p_pulse_acc), .p_step(p_step), .p_dir(p_dir),
-        .drv_gconf(gconf), .drv_gconf_nx(gconf_nx), .drv_ifconf(ifconf),
+        .drv_gconf(gconf), .drv_gconf_nx(gconf_nx),
+        .drv_gconf_we(gconf_we), .drv_gconf_wd(gconf_wd), .drv_ifconf(ifconf),
         .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf), .drv_ramp_tick(rtick),
         .drv_cw(cw), .drv_dgw(dgw), .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
         .drv_cover_datagram(cover_datagram),
@@ -193,7 +195,7 @@ module tmc429_top #(
         .step(m_step), .dir(m_dir),
         .ustep({probe_m2_ustep, probe_m1_ustep, probe_m0_ustep}),
         .i_scale({is2, is1, is0}), .ramp_tick(ramp_tick),
-        .clk2_div_nx(gconf_nx[15:8]), .lsmd(gconf[1:0]),
+        .clk2_div_we(gconf_we), .clk2_div_wd(gconf_wd[15:8]), .lsmd(gconf[1:0]),
         .pol_ph_ab(gconf[4]), .pol_fd_ab(gconf[5]), .pol_dac_ab(gconf[6]),
         .cont_update(gconf[16]), .cw(cw), .dgw(dgw),
         .cover_pos(cover_pos), .cover_len(cover_len), .cover_datagram(cover_datagram),

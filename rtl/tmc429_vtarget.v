@@ -206,11 +206,20 @@ module tmc429_vtarget #(
     reg [11:0] y;
     reg        sticky;
 
-    // control of the motor in A (taken at the load cycle)
+    // control of the motor in A, formed from pdiv at the c cycle (the parameter RAM's output
+    // holds the snapshot until the next snapshot edge, the load cycle) and taken at the load
     wire       l_soft = a_rm == 2'd1;
-    wire       l_skip = ~l_soft & ~a_pdiv[3];
-    wire       l_odd  = l_soft ? (a_pdiv[1] & a_pdiv[0]) : a_pdiv[1];
-    wire [2:0] l_ne   = l_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : (a_pdiv[2] ? 3'd6 : 3'd7);
+    reg        l_skip, l_odd;
+    reg [2:0]  l_ne;
+    always @(posedge clk) begin
+        if (rst) begin
+            l_skip <= 1'b0; l_odd <= 1'b0; l_ne <= 3'd0;
+        end else if (run & a_c) begin
+            l_skip <= ~l_soft & ~a_pdiv[3];
+            l_odd  <= l_soft ? (a_pdiv[1] & a_pdiv[0]) : a_pdiv[1];
+            l_ne   <= l_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : (a_pdiv[2] ? 3'd6 : 3'd7);
+        end
+    end
 
     wire        m_soft = b_load ? l_soft : (b_rm == 2'd1);
     wire [27:0] src    = b_load ? (l_skip ? {acc[20:0], 7'd0} : acc[28:1]) : sr;
