@@ -125,6 +125,13 @@ module tmc429_chain (
     reg [23:0] cov_data;
     reg [9:0]  cupd0, cupd1, cupd2;
     reg        cover_busy_n, dgw_busy_n, start, shift;
+    // can_start = (state == IDLE) | (CSOFF with cnt <= 1): a datagram may start in this edge.
+    // A register formed with the next state (HOLD enters CSOFF with cnt = P >= 16), so that
+    // `start` is request AND a flip-flop.
+    reg        can_start;
+    wire       can_start_n = ~run ? can_start
+                           : (~spi_mode | (~start & ((state == IDLE)
+                                                     | ((state[2:1] == 2'b11) & (cnt <= 10'd2)))));
     reg [47:0] readback_n;
 
     // ---- RAM reads ahead of a bit (C80) ------------------------------------------------------
@@ -178,8 +185,9 @@ module tmc429_chain (
                     cs_n = 1'b0;  sck_n = 1'b1;  sdo_n = 1'b0;
                 end
             end else begin
+                start = can_start & request;
                 if (state == IDLE) begin
-                    start = request;
+                    // waiting for a request (start)
                 end else if (cnt > 10'd1) begin
                     cnt_n = cnt - 10'd1;
                 end else begin
@@ -219,7 +227,6 @@ module tmc429_chain (
                     default: begin
                         // CSOFF over: the next datagram starts at once if one is requested
                         state_n = IDLE;
-                        start = request;
                     end
                     endcase
                 end
@@ -241,12 +248,14 @@ module tmc429_chain (
     always @(posedge clk) begin
         if (rst) begin
             state <= IDLE;  cnt <= 10'd0;  cidx <= 6'd0;  motor <= 2'd0;  bits <= 7'd0;
+            can_start <= 1'b1;
             req <= 1'b0;  stepped <= 3'd0;  nxm <= 1'b0;
             cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
             cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b0;
             cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;  cupd_top <= 3'd0;
         end else begin
             state <= state_n;  cnt <= cnt_n;  cidx <= cidx_n;  motor <= motor_n;
+            can_start <= can_start_n;
             bits <= bits_n;  req <= req_n;  stepped <= stepped_n;  nxm <= nxm_n;
             cover_busy <= cover_busy_n;  dgw_busy <= dgw_busy_n;  readback <= readback_n;
             cs <= cs_n;  sck <= sck_n;  sdo <= sdo_n;
@@ -261,9 +270,11 @@ module tmc429_chain (
         end
     end
 
-    // snapshot, cover latch, bit pipeline: no reset needed (written before use)
+    // snapshot, cover latch, bit pipeline: no reset needed (written before use). The snapshot
+    // and the cover latch load in every edge that may start a datagram (can_start), so the
+    // last load before a datagram is its start edge; they are read only while one runs.
     always @(posedge clk) begin
-        if (start) begin
+        if (can_start) begin
             snap_w    <= ustep;
             snap_is   <= i_scale;
             snap_dir  <= dir;

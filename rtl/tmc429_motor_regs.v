@@ -19,8 +19,10 @@ module tmc429_motor_regs #(
     input  wire        we,        // µC write to this motor (executed now)
     input  wire [3:0]  widx,
     input  wire [23:0] wdata,
-    input  wire [3:0]  ridx,
-    output reg  [23:0] rdata,
+    /* verilator lint_off UNUSEDSIGNAL */  // the IDX whose read value is in the shadow RAM
+    input  wire [15:0] rsel,      // read address IDX, one-hot (registered in tmc429_regfile)
+    /* verilator lint_on UNUSEDSIGNAL */
+    output wire [23:0] rdata,
     input  wire        sw_l,      // mapped left switch (C60)
     input  wire        sw_r,      // mapped right switch
     input  wire        ramp_tick, // phase 30 of a ramp frame (C40, C41)
@@ -139,22 +141,16 @@ module tmc429_motor_regs #(
     end
 
     // read value of the state (C21-C27); the bits a µC write sets come from the shadow RAM
-    // of the register file and are 0 here (IDX 10: lp only; IDX 11: int_flags only)
-    always @(*) begin
-        case (ridx)
-        4'd1:  rdata = x_actual;
-        4'd4:  rdata = {12'd0, v_target};
-        // v_actual = V >> 8 rounded toward 0 (C42): V[19:8] and the rounding carry (V < 0
-        // with a nonzero fraction) in bit 12; the register file adds them after the motor mux
-        4'd5:  rdata = {11'd0, v[19] & (v[7:0] != 8'd0), v[19:8]};
-        4'd7:  rdata = {12'd0, a_actual};
-        4'd10: rdata = {7'd0, lp, 16'd0};
-        4'd11: rdata = {16'd0, int_flags};
-        4'd14: rdata = x_latched;
-        4'd15: rdata = HAS_IDX15 ? {16'd0, ustep} : 24'd0;
-        default: rdata = 24'd0;
-        endcase
-    end
+    // of the register file and are 0 here (IDX 10: lp only; IDX 11: int_flags only). The IDX
+    // is one-hot, so the multiplexer is an AND-OR.
+    // v_actual (IDX 5, C42) is formed in the register file from V of the selected motor
+    assign rdata = ({24{rsel[1]}} & x_actual)
+                 | ({24{rsel[4]}} & {12'd0, v_target})
+                 | ({24{rsel[7]}} & {12'd0, a_actual})
+                 | ({24{rsel[10]}} & {7'd0, lp, 16'd0})
+                 | ({24{rsel[11]}} & {16'd0, int_flags})
+                 | ({24{rsel[14]}} & x_latched)
+                 | ({24{rsel[15] & (HAS_IDX15 != 0)}} & {16'd0, ustep});
 endmodule
 
 `default_nettype wire

@@ -116,9 +116,40 @@ module tmc429_regfile #(
             if (!frame[k])
                 ones_d = k[3:0];
     end
+    // The ticks include run of the edge after (powered down the motion core has no tick):
+    // power_down after this edge = a write of it in this edge, else the waking frame start
+    // clears it (C66).
     wire [4:0] ph      = prescaler[4:0];
-    wire ph_ramp_nx  = run ? (ph == 5'd29) : (ph == 5'd30);
-    wire ph_pulse_nx = run ? (ph == 5'd30) : (ph == 5'd31);
+    wire pd_nx       = (wr_g & (jdx == 4'd8)) | (pd & ~frame_start);
+    wire ph_ramp_nx  = ~pd_nx & (run ? (ph == 5'd29) : (ph == 5'd30));
+    wire ph_pulse_nx = ~pd_nx & (run ? (ph == 5'd30) : (ph == 5'd31));
+
+    // ---- read address decode (C10) ---------------------------------------------------------
+    // The address is complete in the SPI input register from the edge after the 7th bit, and
+    // the read data is loaded at the 8th bit's rising SCK_C edge, two edges later at the
+    // earliest (a synchronized SCK_C needs a low cycle between two rising edges): a decode
+    // registered every edge is the address's at the loading edge, and the read multiplexer
+    // starts at flip-flops (one-hot selects, AND-OR).
+    reg         rq_ram, rq_glb, rq_va;
+    reg  [2:0]  rq_mot;
+    reg  [15:0] rq_idx;
+    reg  [23:0] rq_rst;
+    integer     j;
+    always @(posedge clk) begin
+        if (rst) begin
+            rq_ram <= 1'b0;  rq_glb <= 1'b0;  rq_va <= 1'b0;  rq_mot <= 3'd0;  rq_idx <= 16'd0;
+            rq_rst <= 24'd0;
+        end else begin
+            rq_ram <= rd_addr[6];
+            rq_glb <= rd_addr[5:4] == 2'd3;
+            rq_mot <= {(rd_addr[5:4] == 2'd2) & (CHIP != 2), (rd_addr[5:4] == 2'd1) & (CHIP != 2),
+                       rd_addr[5:4] == 2'd0};
+            for (j = 0; j < 16; j = j + 1)
+                rq_idx[j] <= rd_addr[3:0] == j[3:0];
+            rq_va  <= (rd_addr[5:4] != 2'd3) & (rd_addr[3:0] == 4'd5);
+            rq_rst <= sh_rst(rd_addr[5:0]);
+        end
+    end
 
     // ---- motors -----------------------------------------------------------------------
     wire [71:0] m_rdata;      // read data of motor m in [24m+23:24m]
@@ -151,7 +182,7 @@ module tmc429_regfile #(
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & present),
                 .we(wr & present & (a7[6:4] == g)), .widx(a7[3:0]), .wdata(wdata),
-                .ridx(rd_addr[3:0]), .rdata(m_rdata[24*g+23:24*g]),
+                .rsel(rq_idx), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
                 .ramp_tick(ramp_tick[g]),
                 .pulse_tick(pulse_tick[g]),
@@ -374,36 +405,27 @@ module tmc429_regfile #(
         .clk(clk), .rst(rst),
         .we(wr & ~a7[6]), .waddr(a7[5:0]), .wdata(sh_wdata),
         .re(1'b1), .raddr(rd_addr_q), .q(sh_q), .wq(sh_wq));
-    wire [23:0] sh_data = sh_wq ? sh_q : sh_rst(rd_addr[5:0]);
+    wire [23:0] sh_data = sh_wq ? sh_q : rq_rst;
 
     // ---- read mux ---------------------------------------------------------------------
-    reg [23:0] st_data;
+    wire [23:0] st_glb = ({24{rq_idx[0] & HAS_CHAIN}} & chain_readback[23:0])    // datagram_low_word
+                       | ({24{rq_idx[1] & HAS_CHAIN}} & chain_readback[47:24])   // datagram_high_word
+                       | {rq_idx[2] & HAS_CHAIN & (cw | chain_cover_busy), 23'd0}
+                       | {23'd0, rq_idx[6] & HAS_429 & pc_i}
+                       | {18'd0, {6{rq_idx[14]}} & {sw_l[2], sw_r[2], sw_l[1], sw_r[1], sw_l[0], sw_r[0]}};
+    // power_down reads 0; the rest: shadow RAM
+    wire [23:0] st_data = ({24{rq_mot[0]}} & m_rdata[23:0])
+                        | ({24{rq_mot[1]}} & m_rdata[47:24])
+                        | ({24{rq_mot[2]}} & m_rdata[71:48])
+                        | ({24{rq_glb}} & st_glb);
+    // IDX 5 (v_actual = V >> 8 rounded toward 0, C42): V of the selected motor, one
+    // incrementer for the three motors on this path only
+    wire [19:0] v_sel  = ({20{rq_mot[0]}} & p_v[19:0]) | ({20{rq_mot[1]}} & p_v[39:20])
+                       | ({20{rq_mot[2]}} & p_v[59:40]);
+    wire [11:0] v_rd   = v_sel[19:8] + {11'd0, v_sel[19] & (v_sel[7:0] != 8'd0)};
+    wire [23:0] st_va  = st_data | {12'd0, {12{rq_va}} & v_rd};
     always @(*) begin
-        st_data = 24'd0;
-        if (rd_addr[5:4] == 2'b00) begin
-            st_data = m_rdata[23:0];
-        end else if (rd_addr[5:4] == 2'b01) begin
-            st_data = m_present1 ? m_rdata[47:24] : 24'd0;
-        end else if (rd_addr[5:4] == 2'b10) begin
-            st_data = m_present1 ? m_rdata[71:48] : 24'd0;
-        end else begin
-            case (rd_addr[3:0])
-            4'd0:  st_data = HAS_CHAIN ? chain_readback[23:0] : 24'd0;    // datagram_low_word
-            4'd1:  st_data = HAS_CHAIN ? chain_readback[47:24] : 24'd0;   // datagram_high_word
-            4'd2:  st_data = {HAS_CHAIN && (cw | chain_cover_busy), 23'd0};
-            4'd6:  st_data = {23'd0, HAS_429 && pc_i};
-            4'd14: st_data = {18'd0, sw_l[2], sw_r[2], sw_l[1], sw_r[1], sw_l[0], sw_r[0]};
-            default: st_data = 24'd0;   // power_down reads 0; the rest: shadow RAM
-            endcase
-        end
-    end
-    // IDX 5 (v_actual): the motor's read data carries V[19:8] and the rounding carry in bit
-    // 12 (tmc429_motor_regs); one incrementer serves the three motors
-    wire        rd_va  = (rd_addr[5:4] != 2'd3) & (rd_addr[3:0] == 4'd5);
-    wire        va_c   = rd_va & st_data[12];
-    wire [23:0] st_va  = {st_data[23:13], st_data[12] & ~rd_va, st_data[11:0] + {11'd0, va_c}};
-    always @(*) begin
-        if (rd_addr[6])
+        if (rq_ram)
             rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
         else
             rd_data = st_va | sh_data;

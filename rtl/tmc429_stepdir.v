@@ -40,20 +40,47 @@ module tmc429_stepdir (
     // backlog + s + t with t = -sign(b) when a STEP pulse starts (take), else 0.
     wire        s_pos  = step_in & ~dir_in;
     wire        s_neg  = step_in & dir_in;
-    wire        b_hi0  = backlog[23:1] == 23'd0;
-    wire        b_z    = b_hi0 & ~backlog[0];
-    wire        b_p1   = b_hi0 & backlog[0];
-    wire        b_m1   = backlog == 24'hFFFFFF;
+    // backlog = 0, 1, -1 as registers formed with the next state: the new backlog is
+    // backlog + dlt (dlt = -2..2), so it is v exactly when backlog = v - dlt, and the
+    // comparisons of the backlog with -3..3 do not wait for the addition
+    reg         b_z, b_p1, b_m1;
     wire        neg    = s_pos ? (backlog[23] & ~b_m1)
                                 : (s_neg ? (backlog[23] | b_z) : backlog[23]);     // b < 0
     wire        bl_nz  = ~(s_pos ? b_m1 : (s_neg ? b_p1 : b_z));                    // b != 0
-    wire        hold   = (state != READY) && (cnt > 9'd1);
+    // hold = state != READY and cnt > 1, a register formed with the next state: a counting
+    // state keeps it while cnt > 2, a pulse / space / DIR set-up starts with cnt = T >= 16
+    reg         hold;
     wire        pend   = (state == PULSE) && !step_half;
     wire        take   = ~hold & ~pend & bl_nz & (neg == dir);
     wire [2:0]  s_d    = s_pos ? 3'd1 : (s_neg ? 3'd7 : 3'd0);
     wire [2:0]  t_d    = take ? (neg ? 3'd1 : 3'd7) : 3'd0;
     wire [2:0]  dlt    = s_d + t_d;                                                 // -2..2
     wire [23:0] bl     = backlog + {{21{dlt[2]}}, dlt};
+    wire        e_hi0  = backlog[23:3] == 21'd0;
+    wire        e_hi1  = backlog[23:3] == 21'h1FFFFF;
+    wire [6:0]  e      = {e_hi0 & (backlog[2:0] == 3'd3), e_hi0 & (backlog[2:0] == 3'd2),
+                          e_hi0 & (backlog[2:0] == 3'd1), e_hi0 & (backlog[2:0] == 3'd0),
+                          e_hi1 & (backlog[2:0] == 3'd7), e_hi1 & (backlog[2:0] == 3'd6),
+                          e_hi1 & (backlog[2:0] == 3'd5)};   // backlog = 3 .. -3
+    // bl = v for v = -1, 0, 1: backlog = v - dlt, e index v - dlt + 3
+    function bl_is;
+        input [6:0] ev;
+        input [2:0] d;
+        input integer v;
+        begin
+            case (d)
+            3'd0: bl_is = ev[v + 3];
+            3'd1: bl_is = ev[v + 2];
+            3'd2: bl_is = ev[v + 1];
+            3'd7: bl_is = ev[v + 4];
+            3'd6: bl_is = ev[v + 5];
+            default: bl_is = 1'b0;
+            endcase
+        end
+    endfunction
+
+    wire        hold_n = ~run ? hold
+                       : (~en ? 1'b0 : (hold ? (cnt > 9'd2) : (pend | bl_nz)));
 
     always @(*) begin
         state_n   = state;
@@ -97,12 +124,22 @@ module tmc429_stepdir (
         if (rst) begin
             state   <= READY;
             cnt     <= 9'd0;
+            hold    <= 1'b0;
+            b_z     <= 1'b1;
+            b_p1    <= 1'b0;
+            b_m1    <= 1'b0;
             backlog <= 24'd0;
             step    <= 1'b0;
             dir     <= 1'b0;
         end else begin
             state   <= state_n;
             cnt     <= cnt_n;
+            hold    <= hold_n;
+            if (run) begin
+                b_z  <= ~en | bl_is(e, dlt, 0);
+                b_p1 <= en & bl_is(e, dlt, 1);
+                b_m1 <= en & bl_is(e, dlt, -1);
+            end
             backlog <= backlog_n;
             step    <= step_n;
             dir     <= dir_n;

@@ -161,7 +161,7 @@ module tmc429_top #(
 
     // ramp ticks (C40): phase 30 of the frames whose low ramp_div bits are all 1, from the
     // frame schedule of the register file (the motors' own ramp ticks)
-    wire [2:0]  ramp_tick = rtick & {3{run}};
+    wire [2:0]  ramp_tick = rtick;      // 0 while powered down
 
     // current scaling (C75-C77); the TMC4210 has none
     wire [2:0] is0, is1, is2;

@@ -56,39 +56,56 @@ module tmc429_vtarget #(
     // committed target velocities (12-bit two's complement), motor m in [12m+11:12m]
     output wire [35:0] vt
 );
-    // ---- schedule --------------------------------------------------------------------
+    // ---- schedule ----------------------------------------------------------------------
+    // decoded from the phase after each edge (p + run) into registers, so that every stage
+    // starts at a flip-flop
     reg        a_snap, a_c, a_mul, b_load, b_run, c_out, commit;
     reg [1:0]  a_m;
     reg        c_m;                // motor of C's result: 0 or 1 (motor 2: committed from C)
     reg [2:0]  b_k;               // B cycle index 0..6
+    reg        n_a_snap, n_a_c, n_a_mul, n_b_load, n_b_run, n_c_out, n_commit, n_c_m;
+    reg [1:0]  n_a_m;
+    reg [2:0]  n_b_k;
+    wire [4:0] phase_nx = phase + {4'd0, run};
     always @(*) begin
-        a_snap = 1'b0; a_c = 1'b0; a_mul = 1'b0; b_load = 1'b0; b_run = 1'b0; c_out = 1'b0;
-        commit = 1'b0; a_m = 2'd0; c_m = 1'b0; b_k = 3'd0;
-        case (phase)
-        5'd0:  begin a_snap = 1'b1; a_m = 2'd0; end
-        5'd7:  begin a_snap = 1'b1; a_m = 2'd1; end
-        5'd14: begin a_snap = 1'b1; a_m = 2'd2; end
-        5'd1, 5'd8, 5'd15: a_c = 1'b1;
+        n_a_snap = 1'b0; n_a_c = 1'b0; n_a_mul = 1'b0; n_b_load = 1'b0; n_b_run = 1'b0;
+        n_c_out = 1'b0; n_commit = 1'b0; n_a_m = 2'd0; n_c_m = 1'b0; n_b_k = 3'd0;
+        case (phase_nx)
+        5'd0:  begin n_a_snap = 1'b1; n_a_m = 2'd0; end
+        5'd7:  begin n_a_snap = 1'b1; n_a_m = 2'd1; end
+        5'd14: begin n_a_snap = 1'b1; n_a_m = 2'd2; end
+        5'd1, 5'd8, 5'd15: n_a_c = 1'b1;
         5'd2, 5'd3, 5'd4, 5'd5, 5'd6, 5'd9, 5'd10, 5'd11, 5'd12, 5'd13,
-        5'd16, 5'd17, 5'd18, 5'd19, 5'd20: a_mul = 1'b1;
+        5'd16, 5'd17, 5'd18, 5'd19, 5'd20: n_a_mul = 1'b1;
         default: ;
         endcase
-        case (phase)
-        5'd7, 5'd14, 5'd21:  begin b_load = 1'b1; b_run = 1'b1; b_k = 3'd0; end
-        5'd8, 5'd15, 5'd22:  begin b_run = 1'b1; b_k = 3'd1; end
-        5'd9, 5'd16, 5'd23:  begin b_run = 1'b1; b_k = 3'd2; end
-        5'd10, 5'd17, 5'd24: begin b_run = 1'b1; b_k = 3'd3; end
-        5'd11, 5'd18, 5'd25: begin b_run = 1'b1; b_k = 3'd4; end
-        5'd12, 5'd19, 5'd26: begin b_run = 1'b1; b_k = 3'd5; end
-        5'd13, 5'd20, 5'd27: begin b_run = 1'b1; b_k = 3'd6; end
+        case (phase_nx)
+        5'd7, 5'd14, 5'd21:  begin n_b_load = 1'b1; n_b_run = 1'b1; n_b_k = 3'd0; end
+        5'd8, 5'd15, 5'd22:  begin n_b_run = 1'b1; n_b_k = 3'd1; end
+        5'd9, 5'd16, 5'd23:  begin n_b_run = 1'b1; n_b_k = 3'd2; end
+        5'd10, 5'd17, 5'd24: begin n_b_run = 1'b1; n_b_k = 3'd3; end
+        5'd11, 5'd18, 5'd25: begin n_b_run = 1'b1; n_b_k = 3'd4; end
+        5'd12, 5'd19, 5'd26: begin n_b_run = 1'b1; n_b_k = 3'd5; end
+        5'd13, 5'd20, 5'd27: begin n_b_run = 1'b1; n_b_k = 3'd6; end
         default: ;
         endcase
-        case (phase)
-        5'd14: begin c_out = 1'b1; c_m = 1'b0; end
-        5'd21: begin c_out = 1'b1; c_m = 1'b1; end
-        5'd29: commit = 1'b1;
+        case (phase_nx)
+        5'd14: begin n_c_out = 1'b1; n_c_m = 1'b0; end
+        5'd21: begin n_c_out = 1'b1; n_c_m = 1'b1; end
+        5'd29: n_commit = 1'b1;
         default: ;
         endcase
+    end
+    always @(posedge clk) begin
+        if (rst) begin
+            // phase 0 after reset
+            a_snap <= 1'b1; a_c <= 1'b0; a_mul <= 1'b0; b_load <= 1'b0; b_run <= 1'b0;
+            c_out <= 1'b0; commit <= 1'b0; a_m <= 2'd0; c_m <= 1'b0; b_k <= 3'd0;
+        end else begin
+            a_snap <= n_a_snap; a_c <= n_a_c; a_mul <= n_a_mul; b_load <= n_b_load;
+            b_run <= n_b_run; c_out <= n_c_out; commit <= n_commit; a_m <= n_a_m;
+            c_m <= n_c_m; b_k <= n_b_k;
+        end
     end
 
     // ---- A: snapshot, c, multiply ------------------------------------------------------

@@ -60,8 +60,8 @@ pub fn timing(clk2_div: u32) -> (u16, u16, u16, u16) {
 
 /// The inputs of the driver-chain master at its RTL boundary (`tmc429_chain`, rtl/README.md
 /// "Unit ports"): levels of the old state, presented before a CLK edge (C70). Bit m / element m
-/// is motor m. `clk2_div` is the register of the state (the RTL takes it as `clk2_div_nx` of
-/// the line before).
+/// is motor m. `clk2_div` is the register of the state (the RTL's SCK_S timing registers load
+/// it in the edge that writes it: `clk2_div_we`, `clk2_div_wd` of the line before).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ChainInputs {
     pub run: bool,

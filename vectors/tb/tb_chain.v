@@ -8,7 +8,7 @@
 
 module tb_chain;
     parameter CHIP = 1;
-    localparam W_IN  = 103;
+    localparam W_IN  = 104;
     localparam W_OUT = 88;
     localparam UNIT  = "chain";
 
@@ -18,15 +18,16 @@ module tb_chain;
     assign vout[86:80] = ram_addr & {7{vout[87]}};
 
     tmc429_chain dut (
-        .clk(clk), .rst(vin[102]),
-        .run(vin[101]),
-        .spi_mode(vin[100]),
-        .step(vin[99:97]),
-        .dir(vin[96:94]),
-        .ustep(vin[93:70]),
-        .i_scale(vin[69:61]),
-        .ramp_tick(vin[60:58]),
-        .clk2_div_nx(vin[57:50]),
+        .clk(clk), .rst(vin[103]),
+        .run(vin[102]),
+        .spi_mode(vin[101]),
+        .step(vin[100:98]),
+        .dir(vin[97:95]),
+        .ustep(vin[94:71]),
+        .i_scale(vin[70:62]),
+        .ramp_tick(vin[61:59]),
+        .clk2_div_we(vin[58]),
+        .clk2_div_wd(vin[57:50]),
         .lsmd(vin[49:48]),
         .pol_ph_ab(vin[47]),
         .pol_fd_ab(vin[46]),

@@ -174,7 +174,8 @@ pub fn chain_layout() -> Layout {
         input("ustep", 24),
         input("i_scale", 9),
         input("ramp_tick", 3),
-        input("clk2_div_nx", 8),
+        input("clk2_div_we", 1),
+        input("clk2_div_wd", 8),
         input("lsmd", 2),
         input("pol_ph_ab", 1),
         input("pol_fd_ab", 1),
@@ -232,7 +233,7 @@ impl ChainPins {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn line(&mut self, rst: bool, i: &chain::ChainInputs, ram_q: u8, clk2_div_nx: u8, new: &chain::Chain, d: &chain::Chain, readback: u64) -> Result<(), String> {
+    fn line(&mut self, rst: bool, i: &chain::ChainInputs, ram_q: u8, clk2_div_w: Option<u8>, new: &chain::Chain, d: &chain::Chain, readback: u64) -> Result<(), String> {
         let rd = if i.run && i.spi_mode { chain::ram_read(new, ram_q) } else { None };
         let abort = i.run && !i.spi_mode && (new.state != chain::IDLE || new.cs || new.req || new.stepped != 0);
         let take = d.state == chain::SETUP && new.state != chain::SETUP;
@@ -246,7 +247,8 @@ impl ChainPins {
             tri(i.ustep, 8),
             tri(i.i_scale, 3),
             i.ramp_tick as u64,
-            clk2_div_nx as u64,
+            clk2_div_w.is_some() as u64,
+            clk2_div_w.unwrap_or(0) as u64,
             i.lsmd as u64,
             i.pol_ph_ab as u64,
             i.pol_fd_ab as u64,
@@ -287,7 +289,7 @@ impl ChainPins {
 impl Recorder for ChainPins {
     fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
         let c = *chip.chain();
-        self.line(true, &Default::default(), 0, 0, &c, &c, chip.global().readback)?;
+        self.line(true, &Default::default(), 0, None, &c, &c, chip.global().readback)?;
         self.pre = Some(Box::new(chip.clone()));
         self.pre_i = chip.chain_inputs();
         self.ram_q = 0;
@@ -302,7 +304,9 @@ impl Recorder for ChainPins {
         pre.chain_step(&mut d, &mut g);
         let q = self.ram_q;
         let post_i = chip.chain_inputs();
-        self.line(false, &i, q, post_i.clk2_div, &new, &d, chip.global().readback)?;
+        // the timing registers load when clk2_div changes (a write of the same value is no change)
+        let w = (post_i.clk2_div != i.clk2_div).then_some(post_i.clk2_div);
+        self.line(false, &i, q, w, &new, &d, chip.global().readback)?;
         if i.run && i.spi_mode {
             if let Some((_, cfg)) = chain::ram_read(pre.chain(), q) {
                 self.ram_q = if cfg { new.cfg } else { new.lut };
