@@ -10,11 +10,13 @@
 // Per cycle with run = 1, from the old state:
 //   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol_L, stop_R
 //                  symmetric; tol only for the REF_RnL-selected switch, |x_actual| < tolerance
-//   ramp tick      (ramp_tick, rm != HOLD) V moves toward T = 256*vt (0 during a soft stop) by
+//   stop flops     stop_hard := at_stop (RAMP/SOFT, x_actual = x_target, |V|>>8 <= v_min, C52)
+//                  | (stop & !SOFT_STOP); stop_soft := stop & SOFT_STOP (C61): the conditions
+//                  of this cycle act in the next one
+//   ramp tick      (ramp_tick, rm != HOLD) V moves toward T = 256*vt (0 while stop_soft) by
 //                  at most a_max; a_actual := change of V; RAMP/SOFT: v_target := vt (C51)
-//   V := 0         when the hard stop holds or (RAMP/SOFT, x_actual = x_target,
-//                  |V|>>8 <= v_min) (C52); wins over the ramp tick (C3)
-//   pulse tick     (pulse_tick) acc += |V|>>8 (0 if V was zeroed this cycle); a carry is one
+//   V := 0         while stop_hard; wins over the ramp tick (C3)
+//   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is one
 //                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
 //   latch (C62)    lp & V != 0 & selected switch changed: x_latched := x_actual, lp := 0
 // µC writes (we, widx, wdata; any run level) take priority over all of these (C3).
@@ -62,6 +64,8 @@ module tmc429_ramp #(
     output wire [11:0] v_actual    // readout sign(V) * (|V| >> 8) (C42)
 );
     reg ref_prev;
+    reg stop_hard;                   // registered stop actions (C52, C61)
+    reg stop_soft;
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -101,48 +105,41 @@ module tmc429_ramp #(
     wire [12:0] m_cmp = {1'b0, v_min, 1'b0} - {1'b0, v_mx, v_mc};
     /* verilator lint_on UNUSEDSIGNAL */
     wire at_stop  = ~rm[1] & xeqt & ~m_cmp[12];
-    wire zero_v   = at_stop | (stop & ~soft_sw);
 
     // ---- ramp tick (C51) -------------------------------------------------------------------------
-    // d = T - V; up = V < T; lands on T when |d| <= a_max, else V +- a_max; a_actual = the
-    // change of V. |d| <= a_max needs d in [-2047, 2047]: the top bits of d are all 0 or all 1.
-    // For speed everything that depends only on registers is formed for both targets, T = 256 vt
-    // (d_t) and T = 0 (soft stop, d_z), and for both step directions (v_up, v_dn); the switch
-    // stop condition, the slowest input, only selects among them.
-    /* verilator lint_off UNUSEDSIGNAL */     // only the carry / sign are used
-    wire [20:0] d_t   = {vt[11], vt, 8'd0} - {v[19], v};
-    wire [11:0] d_z   = 12'd0 - v[11:0];                                 // -V, bits 11..0
-    wire [11:0] le_t  = {1'b0, a_max} - {1'b0, d_t[10:0]};              // d <= a: no borrow
-    wire [11:0] ge_t  = d_t[11:0] + {1'b0, a_max};                      // d >= -a: sign 0
+    // T = 256 vt, or 0 while stop_soft (a flop: T is selected first). up = V < T; lands on T
+    // when |T - V| <= a_max, i.e. V + a_max - T >= 0 and T + a_max - V >= 0: the step sums
+    // V +- a_max (21 bits, no wrap-around) minus / from T, each one sign test; else V +- a_max;
+    // a_actual = the change of V (T - V when landing).
+    // Range: |V|, |T| <= 2047*256, a_max <= 2047. V - T and V + a_max - T >= -2*2047*256 fit in
+    // 21 bits; a sum above 2^20 - 1 (wrapping to a negative sign) needs |T - V| > 2^20 - 2^11,
+    // and then the other sum is negative anyway, so `land` is exact.
+    wire [11:0] t_hi  = stop_soft ? 12'd0 : vt;
+    wire [20:0] t_w   = {t_hi[11], t_hi, 8'd0};
+    wire [20:0] v_w   = {v[19], v};
+    wire [20:0] v_up  = v_w + {10'd0, a_max};
+    wire [20:0] v_dn  = v_w - {10'd0, a_max};
+    /* verilator lint_off UNUSEDSIGNAL */     // only the signs are used
+    wire [20:0] s_vt  = v_w - t_w;                                      // V - T
+    wire [20:0] s_lo  = v_up - t_w;                                     // V + a_max - T
+    wire [20:0] s_hi  = t_w - v_dn;                                     // T + a_max - V
     /* verilator lint_on UNUSEDSIGNAL */
-    wire        dz_t  = d_t == 21'd0;
-    wire        up_t  = ~d_t[20] & ~dz_t;
-    wire        land_t = up_t ? ((d_t[20:11] == 10'h000) & ~le_t[11])
-                              : (((d_t[20:11] == 10'h3FF) & ~ge_t[11]) | dz_t);
-    wire [19:0] v_up  = v + {9'd0, a_max};                              // |V -+ a| < 2^19
-    wire [19:0] v_dn  = v - {9'd0, a_max};
-    // T = 0 lands when |V| <= a_max: V < 0: V + a_max >= 0; V >= 0: V - a_max <= 0 (the
-    // step sums themselves, no wrap-around: |V| < 2^19, a_max < 2^11)
-    wire        up_z  = v_neg;                                          // -V > 0
-    wire        land_z = up_z ? ~v_up[19] : (v_dn[19] | (v_dn == 20'd0));
-    wire        ss    = stop & soft_sw;                                 // soft stop: T = 0
-    wire [11:0] t_hi  = ss ? 12'd0 : vt;
-    wire        up    = ss ? up_z : up_t;
-    wire        land  = ss ? land_z : land_t;
-    wire [11:0] d_lo  = ss ? d_z : d_t[11:0];
+    wire        up    = s_vt[20];
+    wire        land  = ~s_lo[20] & ~s_hi[20];
+    wire [11:0] d_lo  = {t_hi[3:0], 8'd0} - v[11:0];                    // T - V, bits 11..0
     wire [11:0] a_neg = 12'd0 - {1'b0, a_max};
-    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
+    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up[19:0] : v_dn[19:0]);
     // the change of V: d when landing, else the step
     wire [11:0] a_rmp = land ? d_lo : (up ? {1'b0, a_max} : a_neg);
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
-    // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused); when V is zeroed
-    // this cycle the sum is acc (no carry), selected after the adder (zero_v is slow)
+    // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused); while stop_hard
+    // holds the sum is acc (no carry)
     /* verilator lint_off UNUSEDSIGNAL */
     wire [12:0] p_t   = {1'b0, acc, 1'b1} + {1'b0, v_mx, v_mc};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [11:0] p_sum = zero_v ? {1'b0, acc} : p_t[12:1];
+    wire [11:0] p_sum = stop_hard ? {1'b0, acc} : p_t[12:1];
     wire        p_step = pulse_tick & p_sum[11];
     reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
     always @(*) begin
@@ -169,9 +166,12 @@ module tmc429_ramp #(
             x_actual <= 24'd0;  v <= 20'd0;      v_target <= 12'd0;  a_actual <= 12'd0;
             ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
+            stop_hard <= 1'b0;  stop_soft <= 1'b0;
         end else begin
             if (run) begin
                 ref_prev <= sel;
+                stop_hard <= at_stop | (stop & ~soft_sw);
+                stop_soft <= stop & soft_sw;
                 if (lp & ~v_zero & (sel != ref_prev)) begin
                     x_latched <= x_actual;
                     lp <= 1'b0;
@@ -181,7 +181,7 @@ module tmc429_ramp #(
                     if (~rm[1])
                         v_target <= vt;
                 end
-                if (zero_v)
+                if (stop_hard)
                     v <= 20'd0;
                 else if (tick)
                     v <= v_rmp;

@@ -562,9 +562,14 @@ impl Tmc429 {
             m.ref_prev = sel;
 
             let v_old = m.v;
+            // The stop actions of this cycle are the registered conditions of the last one
+            // (C52, C61); the conditions of this cycle act in the next.
+            let (stop_hard, stop_soft) = (m.stop_hard, m.stop_soft);
+            m.stop_hard = stop_at_target || hard_stop;
+            m.stop_soft = stop && soft;
             // Ramp tick (C51).
             if phase == PHASE_RAMP && m.rm != HOLD_MODE && (frame & ((1 << m.ramp_div) - 1)) == (1 << m.ramp_div) - 1 {
-                let t = if stop && soft { 0 } else { vt * 256 };
+                let t = if stop_soft { 0 } else { vt * 256 };
                 let v_new = Motor::approach(v_old, t, m.a_max);
                 m.a_actual = v_new - v_old;
                 m.v = v_new;
@@ -572,13 +577,13 @@ impl Tmc429 {
                     m.v_target = (vt as u32 & 0xFFF) as u16;
                 }
             }
-            if stop_at_target || hard_stop {
+            if stop_hard {
                 m.v = 0;
             }
-            // Pulse tick (C53): velocity taken as 0 when a stop holds this cycle.
+            // Pulse tick (C53): velocity taken as 0 while the hard stop action holds.
             m.step = false;
             if phase == PHASE_PULSE && (frame & ((1 << m.pulse_div) - 1)) == (1 << m.pulse_div) - 1 {
-                let v_eff = if stop_at_target || hard_stop { 0 } else { v_old };
+                let v_eff = if stop_hard { 0 } else { v_old };
                 let sum = m.acc + (v_eff.unsigned_abs() >> 8) as u16;
                 m.acc = sum & 0x7FF;
                 if sum > 0x7FF {

@@ -106,6 +106,13 @@ pub struct Motor {
     pub cond_prev: u8,
     /// History flop of the reference switch for the latch (C62).
     pub ref_prev: bool,
+    /// Registered hard stop action (C52, C61): set from the old state of the last running
+    /// cycle when the stop at target or a hard switch stop held; while set, V := 0 and the
+    /// pulse tick adds nothing.
+    pub stop_hard: bool,
+    /// Registered soft stop action (C61): set from the old state of the last running cycle
+    /// when a switch stop held with SOFT_STOP; while set, the ramp target T is 0 (C51).
+    pub stop_soft: bool,
 }
 
 /// Interrupt conditions of the reset state: POS_END (x_actual = x_target = 0), REF_MISS
@@ -147,6 +154,8 @@ impl Motor {
             dir: false,
             cond_prev: COND_RESET,
             ref_prev: false,
+            stop_hard: false,
+            stop_soft: false,
         }
     }
 

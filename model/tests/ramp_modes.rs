@@ -55,3 +55,36 @@ fn soft_mode_ends_on_target() {
     assert_eq!(max_x, 20_000, "never passed");
     assert_eq!(h.chip().motor(0).v, 0);
 }
+
+/// C52: the stop at target is registered. The step onto x_target (phase 31) makes the condition
+/// true in the old state of the next edge, which sets stop_hard and leaves V as it is; V := 0
+/// one edge later, and no further step follows.
+#[test]
+fn stop_at_target_acts_one_edge_later() {
+    let mut h = host(Chip::Tmc428);
+    let p = tmc429_model::pmulpdiv::calc(100, 0, 0, 0.05).register_value().unwrap();
+    motion_setup(&mut h, 0, 0, 0, 2, 2047, 100, p, 0);
+    wr(&mut h, 0, X_TARGET, 3_000);
+    let idle = h.pins();
+    let c = h.chip_mut();
+    let mut edges = 0;
+    while c.motor(0).x_actual != 3_000 {
+        c.tick(&idle);
+        edges += 1;
+        assert!(edges < 2_000_000, "the move ends");
+    }
+    let m = *c.motor(0);
+    assert!(m.step && c.probes().prescaler & 31 == 0, "the step onto the target is made at phase 31");
+    assert!(m.v != 0 && m.v.unsigned_abs() >> 8 <= 2, "arrives at |v| <= v_min = 2, V moving: {}", m.v);
+    assert!(!m.stop_hard);
+    c.tick(&idle);
+    assert!(c.motor(0).stop_hard, "the condition of phase 0 is registered");
+    assert_eq!(c.motor(0).v, m.v, "V is untouched in the edge that sees the condition");
+    c.tick(&idle);
+    assert_eq!(c.motor(0).v, 0, "V := 0 one edge later");
+    for _ in 0..64 {
+        c.tick(&idle);
+        assert_eq!(c.motor(0).x_actual, 3_000);
+        assert_eq!(c.motor(0).v, 0);
+    }
+}

@@ -69,8 +69,13 @@ fn hard_stop_left() {
     assert_eq!(h.chip().motor(0).v_actual(), -1000);
     wr(&mut h, 0, INTERRUPT, 0xFFFF); // clear what happened so far
     set_refs(&mut h, true, false, false);
+    // C4: the switch is in the old state of the 3rd edge; C61: the condition holds there and
+    // sets stop_hard; C52: V := 0 in the 4th.
     h.wait(3);
-    assert_eq!(h.chip().motor(0).v, 0, "stopped 3 CLK after the pin (2 sync flops + 1)");
+    assert!(h.chip().motor(0).stop_hard, "the condition of the 3rd edge is registered");
+    assert_eq!(h.chip().motor(0).v, -1000 * 256, "the action comes one edge later (C52)");
+    h.wait(1);
+    assert_eq!(h.chip().motor(0).v, 0, "stopped 4 CLK after the pin (2 sync flops + condition + action)");
     let x = h.chip().motor(0).x_actual;
     h.wait(10_000);
     assert_eq!(h.chip().motor(0).x_actual, x, "held");

@@ -175,12 +175,17 @@ fn hard_switch_stop_and_latch() {
     assert_eq!(c.rd(0, REF_CONF_RM) >> 16 & 1, 1, "lp armed");
     c.ref1 = true;
     c.wait(2);
+    // the 3rd edge sees the switch (C4): it latches x_actual of its old state (C62) and registers
+    // the stop condition (C61); V := 0 and no step from the 4th edge on (C52)
+    let x_edge = c.rtl.probes().motor[0].x_actual;
+    c.wait(1);
+    assert_eq!(c.rtl.probes().motor[0].v_internal, -1000 * 256, "the stop acts one edge after its condition (C52)");
     let x = c.rtl.probes().motor[0].x_actual;
     c.wait(1);
-    assert_eq!(c.rtl.probes().motor[0].v_internal, 0, "stopped 3 CLK after the pin (C4, C61)");
+    assert_eq!(c.rtl.probes().motor[0].v_internal, 0, "stopped 4 CLK after the pin (C4, C61, C52)");
     c.wait(10_000);
     assert_eq!(c.rd(0, X_ACTUAL), x, "held");
-    assert_eq!(c.rd(0, X_LATCHED), x, "latched at the edge");
+    assert_eq!(c.rd(0, X_LATCHED), x_edge, "latched at the edge");
     assert_eq!(c.rd(0, REF_CONF_RM) >> 16 & 1, 0, "lp cleared");
     // STOP, STOP_LEFT_HIGH and REF_WRONG (left switch active outside a window of 0)
     assert_eq!(c.rd(0, INTERRUPT) & 0xFF, 0x08 | 0x40 | 0x02);
