@@ -117,30 +117,33 @@ module tmc429_ramp #(
     wire [11:0] t_hi  = stop_soft ? 12'd0 : vt;
     wire [20:0] t_w   = {t_hi[11], t_hi, 8'd0};
     wire [20:0] v_w   = {v[19], v};
-    wire [20:0] v_up  = v_w + {10'd0, a_max};
-    wire [20:0] v_dn  = v_w - {10'd0, a_max};
+    wire [19:0] v_up  = v + {9'd0, a_max};     // used only short of T: within +-2047*256
+    wire [19:0] v_dn  = v - {9'd0, a_max};
     /* verilator lint_off UNUSEDSIGNAL */     // only the signs are used
     wire [20:0] s_vt  = v_w - t_w;                                      // V - T
-    wire [20:0] s_lo  = v_up - t_w;                                     // V + a_max - T
-    wire [20:0] s_hi  = t_w - v_dn;                                     // T + a_max - V
+    wire [20:0] s_lo  = v_w + {10'd0, a_max} - t_w;                     // V + a_max - T
+    wire [20:0] s_hi  = t_w + {10'd0, a_max} - v_w;                     // T + a_max - V
     /* verilator lint_on UNUSEDSIGNAL */
     wire        up    = s_vt[20];
     wire        land  = ~s_lo[20] & ~s_hi[20];
     wire [11:0] d_lo  = {t_hi[3:0], 8'd0} - v[11:0];                    // T - V, bits 11..0
     wire [11:0] a_neg = 12'd0 - {1'b0, a_max};
-    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up[19:0] : v_dn[19:0]);
+    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
     // the change of V: d when landing, else the step
     wire [11:0] a_rmp = land ? d_lo : (up ? {1'b0, a_max} : a_neg);
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
     // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused); while stop_hard
-    // holds the sum is acc (no carry)
+    // holds the sum is acc (no carry). The step (the carry out) does not wait for v_mc: it is
+    // the carry of acc + v_mx alone, or v_mc when acc + v_mx is all ones (acc = ~v_mx).
     /* verilator lint_off UNUSEDSIGNAL */
     wire [12:0] p_t   = {1'b0, acc, 1'b1} + {1'b0, v_mx, v_mc};
+    wire [11:0] p_c0  = {1'b0, acc} + {1'b0, v_mx};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [11:0] p_sum = stop_hard ? {1'b0, acc} : p_t[12:1];
-    wire        p_step = pulse_tick & p_sum[11];
+    wire        p_all = (acc ^ v_mx) == 11'h7FF;
+    wire [10:0] p_sum = stop_hard ? acc : p_t[11:1];
+    wire        p_step = pulse_tick & ~stop_hard & (p_c0[11] | (p_all & v_mc));
     reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
     always @(*) begin
         case ({v_neg, usrs})
@@ -187,7 +190,7 @@ module tmc429_ramp #(
                     v <= v_rmp;
                 step <= p_step;
                 if (pulse_tick)
-                    acc <= p_sum[10:0];
+                    acc <= p_sum;
                 if (p_step) begin
                     x_actual <= x_stp;
                     ustep <= u_stp;
