@@ -422,7 +422,8 @@ module tmc429_regfile #(
     // incrementer for the three motors on this path only
     wire [19:0] v_sel  = ({20{rq_mot[0]}} & p_v[19:0]) | ({20{rq_mot[1]}} & p_v[39:20])
                        | ({20{rq_mot[2]}} & p_v[59:40]);
-    wire [11:0] v_rd   = v_sel[19:8] + {11'd0, v_sel[19] & (v_sel[7:0] != 8'd0)};
+    wire [11:0] v_inc  = v_sel[19:8] + 12'd1;     // the rounding selects after the increment
+    wire [11:0] v_rd   = (v_sel[19] & (v_sel[7:0] != 8'd0)) ? v_inc : v_sel[19:8];
     wire [23:0] st_va  = st_data | {12'd0, {12{rq_va}} & v_rd};
     always @(*) begin
         if (rq_ram)
