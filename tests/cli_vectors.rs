@@ -629,23 +629,23 @@ fn chain_pins_replay_and_report_a_planted_fault() {
     let dir = tmpdir("chainpins");
     export(&dir, &["--unit", "chain", "--scenario", "chain-unit", "--format", "pins"]);
     let stem = dir.join("chain-chain-unit-tmc429");
-    assert_eq!((meta(&stem, "width").as_str(), meta(&stem, "in_width").as_str(), meta(&stem, "out_width").as_str()), ("200", "103", "88"));
+    assert_eq!((meta(&stem, "width").as_str(), meta(&stem, "in_width").as_str(), meta(&stem, "out_width").as_str()), ("200", "104", "88"));
     let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
     let lines: Vec<&str> = hex.lines().collect();
     let cycles: usize = meta(&stem, "cycles").parse().unwrap();
     assert_eq!(lines.len(), cycles);
-    // word bits: A 199..196 | inputs 195..93 (rst 195, spi_mode 193, cw 136, dgw 135)
-    // | outputs 92..5 (cover_busy 81, dgw_busy 80, cs 31, sdo 29, state 21..19) | _check 4..0
+    // word bits: A 199..196 | inputs 195..92 (rst 195, spi_mode 193, cw 135, dgw 134)
+    // | outputs 91..4 (cover_busy 80, dgw_busy 79, cs 30, sdo 28, state 20..18) | _check 3..0
     let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
     let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
     assert_eq!((field(lines[0], 195, 1), field(lines[1], 195, 1)), (1, 0));
     // the abort: a busy chain sees spi_mode 0, goes to IDLE with CS inactive; the next line
     // presents cw and dgw waiting again (the register file took them back, C89)
     let a = (1..cycles).find(|&k| field(lines[k], 193, 1) == 0).expect("an en_sd abort");
-    assert_ne!(field(lines[a - 1], 19, 3), 0, "busy before the abort");
-    assert_eq!((field(lines[a - 1], 81, 1), field(lines[a - 1], 80, 1)), (1, 1));
-    assert_eq!((field(lines[a], 19, 3), field(lines[a], 31, 1), field(lines[a], 81, 1), field(lines[a], 80, 1)), (0, 0, 0, 0));
-    assert_eq!((field(lines[a + 1], 136, 1), field(lines[a + 1], 135, 1)), (1, 1));
+    assert_ne!(field(lines[a - 1], 18, 3), 0, "busy before the abort");
+    assert_eq!((field(lines[a - 1], 80, 1), field(lines[a - 1], 79, 1)), (1, 1));
+    assert_eq!((field(lines[a], 18, 3), field(lines[a], 30, 1), field(lines[a], 80, 1), field(lines[a], 79, 1)), (0, 0, 0, 0));
+    assert_eq!((field(lines[a + 1], 135, 1), field(lines[a + 1], 134, 1)), (1, 1));
 
     let vvp = dir.join("tb_chain.vvp");
     let o = Command::new("iverilog")
@@ -662,15 +662,15 @@ fn chain_pins_replay_and_report_a_planted_fault() {
     let out = replay(&vvp, &stem, None);
     assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
 
-    // flip `sdo` (word bit 29: bit 1 of the 8th digit from the right) of the first line with
+    // flip `sdo` (word bit 28: bit 0 of the 8th digit from the right) of the first line with
     // SDO_S high, and the same bit of the check digit (the last)
-    let k = lines.iter().position(|l| field(l, 29, 1) == 1).expect("an SDO_S high bit");
+    let k = lines.iter().position(|l| field(l, 28, 1) == 1).expect("an SDO_S high bit");
     let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
     let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
     let mut c: Vec<char> = bad[k].chars().collect();
     let n = c.len();
-    c[n - 1 - 7] = flip(c[n - 1 - 7] as u8, 2);
-    c[n - 1] = flip(c[n - 1] as u8, 2);
+    c[n - 1 - 7] = flip(c[n - 1 - 7] as u8, 1);
+    c[n - 1] = flip(c[n - 1] as u8, 1);
     bad[k] = c.into_iter().collect();
     let planted = dir.join("planted.hex");
     std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
