@@ -116,9 +116,8 @@ module tmc429_regfile #(
             if (!frame[k])
                 ones_d = k[3:0];
     end
-    // The ticks include run of the edge after (powered down the motion core has no tick):
-    // power_down after this edge = a write of it in this edge, else the waking frame start
-    // clears it (C66).
+    // power_down after this edge (C66): set by a write of it, else cleared by the waking frame
+    // start. The ticks include run of the edge after (powered down the core has no tick).
     wire [4:0] ph      = prescaler[4:0];
     wire pd_nx       = (wr_g & (jdx == 4'd8)) | (pd & ~frame_start);
     wire ph_ramp_nx  = ~pd_nx & (run ? (ph == 5'd29) : (ph == 5'd30));
@@ -285,8 +284,7 @@ module tmc429_regfile #(
             end
             pc_m <= pc_m_nx;
             pc_i <= ((pc_i & ~pc_w1c) | pc_event) & pc_m_nx;
-            if (frame_start)
-                pd <= 1'b0;
+            pd <= pd_nx;
             // the chain's handshake first, a µC write of the same edge wins (C3, C88, C89)
             if (chain_take) begin
                 cw <= 1'b0;
@@ -305,7 +303,7 @@ module tmc429_regfile #(
                 4'd3: if (HAS_CHAIN) cw <= 1'b1;    // the datagram: u_cover
                 4'd4: if (HAS_429) if_conf <= wdata[8:0];
                 4'd5: if (HAS_429) pos_comp <= wdata;
-                4'd8: pd <= 1'b1;
+                // 4'd8: power_down, pd_nx
                 4'd15: begin
                           mot1r <= wdata[21];
                           if (CHIP == 2) begin

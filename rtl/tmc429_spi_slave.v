@@ -72,30 +72,29 @@ module tmc429_spi_slave (
 
     // exec = nscs_rise & (cnt == 32) of the old state, formed one edge ahead into a register:
     // after this edge nscs_q is the first stage's level and nscs_h the present nscs_q, and the
-    // counter is cnt_nx (the write decode behind exec then starts at a flip-flop)
+    // counter is cnt_nx (the write decode behind exec then starts at a flip-flop). The bit
+    // counter clears at the frame start and counts rising SCK_C edges, saturating at 63.
     wire [5:0]  cnt_nx  = nscs_fall ? 6'd0
                         : ((sck_rise & (cnt != 6'd63)) ? cnt + 6'd1 : cnt);
     always @(posedge clk) begin
-        if (rst)
+        if (rst) begin
+            cnt    <= 6'd0;
             exec_q <= 1'b0;
-        else
+        end else begin
+            cnt    <= cnt_nx;
             exec_q <= nscs_s & ~nscs_q & (cnt_nx == 6'd32);
+        end
     end
 
     always @(posedge clk) begin
         if (rst) begin
             in_sr  <= 32'd0;
             out_sr <= 32'd0;
-            cnt    <= 6'd0;
         end else if (nscs_fall) begin
-            cnt    <= 6'd0;
             out_sr <= {status, 24'd0};
         end else begin
-            if (sck_rise) begin
+            if (sck_rise)
                 in_sr <= in_next;
-                if (cnt != 6'd63)
-                    cnt <= cnt + 6'd1;
-            end
             if (rd_load)
                 // after 7 falling edges the reply's bit 23 sits at bit 30
                 out_sr <= {out_sr[31], rd_data, 7'd0};
