@@ -31,7 +31,9 @@
 // (`ret_cw`, `ret_dgw`). Powered down (`run` = 0) everything holds (C66).
 //
 // Pin levels before polarity: `cs`, `sck`, `sdo` and `motor` (for csCommonIndividual) of
-// the current state, `*_n` of the new state (for the registered output pins).
+// the current state; for the registered output pins `sdo_n` of the new state and `cs_ns`,
+// `sck_ns`, `motor_ns` of the new state unless a datagram starts (`take` sets CS active,
+// SCK high, motor 0), so that the start is the last input of the pin levels.
 // Same function as tmc429_model::chain::Chain.
 `default_nettype none
 
@@ -76,10 +78,10 @@ module tmc429_chain (
     output reg         sck,
     output reg         sdo,
     output reg  [1:0]  motor,
-    output reg         cs_n,
-    output reg         sck_n,
-    output reg         sdo_n,
-    output reg  [1:0]  motor_n,
+    output reg         cs_ns,          // cs of the new state if no datagram starts (take = 0)
+    output reg         sck_ns,         // sck likewise
+    output reg         sdo_n,          // sdo of the new state
+    output reg  [1:0]  motor_ns,       // motor likewise
     // probes
     output reg  [2:0]  state,
     output reg  [5:0]  cidx,           // configuration cell of the current bit
@@ -169,20 +171,20 @@ module tmc429_chain (
 
     // ---- next state -------------------------------------------------------------------------
     always @(*) begin
-        state_n = state;  cnt_n = cnt;  cidx_n = cidx;  motor_n = motor;  bits_n = bits;
+        state_n = state;  cnt_n = cnt;  cidx_n = cidx;  motor_ns = motor;  bits_n = bits;
         req_n = req;  stepped_n = stepped;  nxm_n = nxm;
         cover_busy_n = cover_busy;  dgw_busy_n = dgw_busy;  readback_n = readback;
-        cs_n = cs;  sck_n = sck;  sdo_n = sdo;
+        cs_ns = cs;  sck_ns = sck;  sdo_n = sdo;
         start = 1'b0;  shift = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
         if (run) begin
             if (!spi_mode) begin
                 if (state != IDLE || cs || req || stepped != 3'd0) begin
                     // C89: leaving SPI mode aborts; taken flags return to waiting
                     ret_cw = cover_busy;   ret_dgw = dgw_busy;
-                    state_n = IDLE;  cnt_n = 10'd0;  cidx_n = 6'd0;  motor_n = 2'd0;  bits_n = 7'd0;
+                    state_n = IDLE;  cnt_n = 10'd0;  cidx_n = 6'd0;  motor_ns = 2'd0;  bits_n = 7'd0;
                     req_n = 1'b0;  stepped_n = 3'd0;  nxm_n = 1'b0;
                     cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
-                    cs_n = 1'b0;  sck_n = 1'b1;  sdo_n = 1'b0;
+                    cs_ns = 1'b0;  sck_ns = 1'b1;  sdo_n = 1'b0;
                 end
             end else begin
                 start = can_start & request;
@@ -194,12 +196,12 @@ module tmc429_chain (
                     case (state)
                     SETUP, GAP: begin
                         // falling SCK_S: the bit goes out (C84, C85)
-                        sdo_n = bit_now;  nxm_n = cfg[5];  sck_n = 1'b0;
+                        sdo_n = bit_now;  nxm_n = cfg[5];  sck_ns = 1'b0;
                         state_n = LOW;  cnt_n = {1'b0, t_lo};
                     end
                     LOW: begin
                         // rising SCK_S: SDI_S into the readback (C87)
-                        sck_n = 1'b1;
+                        sck_ns = 1'b1;
                         readback_n = {readback[46:0], sdi_s};
                         if (bits != 7'd127)
                             bits_n = bits + 7'd1;
@@ -210,18 +212,18 @@ module tmc429_chain (
                             if (motor >= lsmd_e) begin
                                 state_n = HOLD;  cnt_n = t_p;
                             end else begin
-                                motor_n = motor + 2'd1;  cidx_n = cidx + 6'd1;
+                                motor_ns = motor + 2'd1;  cidx_n = cidx + 6'd1;
                                 state_n = GAP;  cnt_n = t_gap;  shift = 1'b1;
                             end
                         end else begin
                             cidx_n = cidx + 6'd1;
-                            sdo_n = bit_now;  nxm_n = cfg[5];  sck_n = 1'b0;
+                            sdo_n = bit_now;  nxm_n = cfg[5];  sck_ns = 1'b0;
                             state_n = LOW;  cnt_n = {1'b0, t_lo};
                         end
                     end
                     HOLD: begin
                         // end of the datagram: CS inactive, CDGW handshake done (C87, C88)
-                        cs_n = 1'b0;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
+                        cs_ns = 1'b0;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
                         state_n = CSOFF;  cnt_n = t_p;
                     end
                     default: begin
@@ -234,8 +236,7 @@ module tmc429_chain (
                     take = 1'b1;
                     cover_busy_n = cw;  dgw_busy_n = dgw;
                     req_n = 1'b0;  stepped_n = 3'd0;
-                    cidx_n = 6'd0;  motor_n = 2'd0;  bits_n = 7'd0;
-                    cs_n = 1'b1;  sck_n = 1'b1;
+                    cidx_n = 6'd0;  bits_n = 7'd0;
                     state_n = SETUP;  cnt_n = t_p;
                 end else begin
                     req_n = request;
@@ -244,6 +245,12 @@ module tmc429_chain (
             end
         end
     end
+
+    // a start sets CS active, SCK high and motor 0; the pin registers (tmc429_drvpins)
+    // select the same after `take`, so that the start is the last input of a pin's level
+    wire       cs_n    = take | cs_ns;
+    wire       sck_n   = take | sck_ns;
+    wire [1:0] motor_n = take ? 2'd0 : motor_ns;
 
     always @(posedge clk) begin
         if (rst) begin

@@ -2,7 +2,9 @@
 // (docs/model-contract.md C81, C87, C90-C93; TMC428 §9.7, TMC429 §8.2.4, §10; TMC4210).
 //
 // Every pin is a register loaded from the new state of each edge (C1): the chain's and the
-// Step/Dir units' next levels and the next values of the configuration bits.
+// Step/Dir units' next levels and the next values of the configuration bits. The chain's
+// next CS/SCK/motor are given as the levels without a start plus `take` (a start: CS
+// active, SCK high, motor 0).
 //   SPI mode (TMC428; TMC429 en_sd = 0): nSCS_S = !cs XOR polarity_nscs_s, SCK_S = sck XOR
 //     polarity_sck_s, SDO_S = sdo, nSCS2 = nSCS3 = 1; csCommonIndividual = 1: nSCS_S, nSCS2,
 //     nSCS3 = !cs of motors 0, 1, 2 (low active, polarity ignored) (C81).
@@ -27,10 +29,11 @@ module tmc429_drvpins #(
     // new state
     input  wire       spi_n,          // SPI mode
     input  wire       sd_n,           // Step/Dir mode (TMC4210: en_sd)
-    input  wire       cs_n,           // chain: chip select active
-    input  wire       sck_n,          // chain: SCK_S before polarity
+    input  wire       take,           // chain: a datagram starts (CS active, SCK high, motor 0)
+    input  wire       cs_ns,          // chain: chip select active, unless a datagram starts
+    input  wire       sck_ns,         // chain: SCK_S before polarity, unless one starts
     input  wire       sdo_n,          // chain: SDO_S
-    input  wire [1:0] motor_n,        // chain: motor of the current bit
+    input  wire [1:0] motor_ns,       // chain: motor of the current bit, unless one starts
     input  wire [2:0] step_n,         // Step/Dir: STEP levels of motors 2..0 before inv_stp
     input  wire [2:0] dir_n,          // Step/Dir: DIR levels before inv_dir
     input  wire       pol_nscs_s,
@@ -62,14 +65,16 @@ module tmc429_drvpins #(
     always @(*) begin
         p_sdi_s_o = 1'b0;  p_sdi_s_oe = 1'b0;
         if (spi) begin
-            p_sck_s = sck_n ^ pol_sck_s;
+            // the levels without a start, then the start (take) selects: it comes last, so
+            // the chain's request -> start path ends one LUT before the pin register
+            p_sck_s = (sck_ns | take) ^ pol_sck_s;
             p_sdo_s = sdo_n;
             if (cs_com_ind) begin
-                p_nscs_s = ~(cs_n & (motor_n == 2'd0));
-                p_nscs2  = ~(cs_n & (motor_n == 2'd1));
-                p_nscs3  = ~(cs_n & motor_n[1]);
+                p_nscs_s = ~take & ~(cs_ns & (motor_ns == 2'd0));
+                p_nscs2  = take | ~(cs_ns & (motor_ns == 2'd1));
+                p_nscs3  = take | ~(cs_ns & motor_ns[1]);
             end else begin
-                p_nscs_s = ~cs_n ^ pol_nscs_s;
+                p_nscs_s = take ? pol_nscs_s : (~cs_ns ^ pol_nscs_s);
                 p_nscs2  = 1'b1;
                 p_nscs3  = 1'b1;
             end

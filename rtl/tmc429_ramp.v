@@ -70,13 +70,13 @@ module tmc429_ramp #(
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
     wire        v_zero = v == 20'd0;
-    wire        v_lo0  = v[7:0] == 8'd0;
     // |V| >> 8: for V < 0, (~V + 1) >> 8 = ~V[18:8] + (V[7:0] == 0), i.e. v_mx + v_mc; the
-    // sum is not formed on its own: its users add v_mc as the carry into their own adder
+    // sum is not formed on its own: its users add v_mc as the carry into their own adder.
+    // v_mc is a flip-flop loaded with every load of V (from the new V's sign and low byte)
     wire [10:0] v_mx   = v[18:8] ^ {11{v_neg}};
-    wire        v_mc   = v_neg & v_lo0;
+    reg         v_mc;            // = v_neg & (V[7:0] == 0), formed with V's next state
     // sign(V) * (|V| >> 8): V >> 8 rounded toward 0
-    assign v_actual = v[19:8] + {11'd0, v_neg & ~v_lo0};
+    assign v_actual = v[19:8] + {11'd0, v_neg & ~v_mc};
 
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
     wire        x_hi0 = x_actual[23:12] == 12'h000;
@@ -132,18 +132,21 @@ module tmc429_ramp #(
     // the change of V: d when landing, else the step
     wire [11:0] a_rmp = land ? d_lo : (up ? {1'b0, a_max} : a_neg);
     wire        tick  = ramp_tick & (rm != 2'd3);
+    // v_mc of the new V: V + a_max (V - a_max) has low byte 0 iff V's low byte is -a_max
+    // (a_max) mod 256; landed on T = 256 vt, it is T's sign
+    wire        mc_up = v_up[19] & (v[7:0] == (8'd0 - a_max[7:0]));
+    wire        mc_dn = v_dn[19] & (v[7:0] == a_max[7:0]);
+    wire        mc_rmp = land ? t_hi[11] : (up ? mc_up : mc_dn);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
-    // acc + (|V| >> 8), the carry v_mc entering at bit 0 (p_t[0] is unused); while stop_hard
-    // holds the sum is acc (no carry). The step (the carry out) does not wait for v_mc: it is
-    // the carry of acc + v_mx alone, or v_mc when acc + v_mx is all ones (acc = ~v_mx).
+    // acc + (|V| >> 8): v_mc (a flip-flop) enters as the carry into bit 1 (bit 0 adds v_mc
+    // to itself and is unused), so the step, the carry out, is one carry chain from
+    // flip-flops; while stop_hard holds the sum is acc (no step).
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [12:0] p_t   = {1'b0, acc, 1'b1} + {1'b0, v_mx, v_mc};
-    wire [11:0] p_c0  = {1'b0, acc} + {1'b0, v_mx};
+    wire [12:0] p_t   = {1'b0, acc, v_mc} + {1'b0, v_mx, v_mc};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire        p_all = (acc ^ v_mx) == 11'h7FF;
     wire [10:0] p_sum = stop_hard ? acc : p_t[11:1];
-    wire        p_step = pulse_tick & ~stop_hard & (p_c0[11] | (p_all & v_mc));
+    wire        p_step = pulse_tick & ~stop_hard & p_t[12];
     reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
     always @(*) begin
         case ({v_neg, usrs})
@@ -169,7 +172,7 @@ module tmc429_ramp #(
             x_actual <= 24'd0;  v <= 20'd0;      v_target <= 12'd0;  a_actual <= 12'd0;
             ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
-            stop_hard <= 1'b0;  stop_soft <= 1'b0;
+            stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
         end else begin
             if (run) begin
                 ref_prev <= sel;
@@ -184,10 +187,13 @@ module tmc429_ramp #(
                     if (~rm[1])
                         v_target <= vt;
                 end
-                if (stop_hard)
+                if (stop_hard) begin
                     v <= 20'd0;
-                else if (tick)
+                    v_mc <= 1'b0;
+                end else if (tick) begin
                     v <= v_rmp;
+                    v_mc <= mc_rmp;
+                end
                 step <= p_step;
                 if (pulse_tick)
                     acc <= p_sum;
@@ -199,7 +205,10 @@ module tmc429_ramp #(
             end
             if (w_x)  x_actual <= wdata;
             if (w_vt) v_target <= wdata[11:0];
-            if (w_va) v <= {w_v, 8'd0};
+            if (w_va) begin
+                v <= {w_v, 8'd0};
+                v_mc <= w_v[11];
+            end
             if (w_lp) lp <= 1'b1;
             if (w_us) ustep <= wdata[7:0];
         end

@@ -182,8 +182,8 @@ module tmc429_top #(
         .i_scale(is2));
 
     // driver chain (C80-C89)
-    wire       c_cs, c_sck, c_sdo, c_cs_n, c_sck_n, c_sdo_n, c_req;
-    wire [1:0] c_motor, c_motor_n;
+    wire       c_cs, c_sck, c_sdo, c_cs_ns, c_sck_ns, c_sdo_n, c_req;
+    wire [1:0] c_motor, c_motor_ns;
     wire [2:0] c_state;
     wire [5:0] c_cell;
     wire [6:0] c_bits;
@@ -204,7 +204,7 @@ module tmc429_top #(
         .take(take), .ret_cw(ret_cw), .ret_dgw(ret_dgw),
         .cover_busy(cover_busy), .dgw_busy(dgw_busy), .readback(readback),
         .cs(c_cs), .sck(c_sck), .sdo(c_sdo), .motor(c_motor),
-        .cs_n(c_cs_n), .sck_n(c_sck_n), .sdo_n(c_sdo_n), .motor_n(c_motor_n),
+        .cs_ns(c_cs_ns), .sck_ns(c_sck_ns), .sdo_n(c_sdo_n), .motor_ns(c_motor_ns),
         .state(c_state), .cidx(c_cell), .bits(c_bits), .req(c_req));
 
     // Step/Dir (C91-C96): three motors on the TMC429, one on the TMC4210, none on the TMC428
@@ -232,7 +232,7 @@ module tmc429_top #(
     // output pins and the 74HC157 switch sampling (C81, C87, C90-C93)
     tmc429_drvpins #(.CHIP(CHIP)) u_pins (
         .clk(clk), .rst(rst), .spi_n(spi_nx), .sd_n(sd_nx),
-        .cs_n(c_cs_n), .sck_n(c_sck_n), .sdo_n(c_sdo_n), .motor_n(c_motor_n),
+        .take(take), .cs_ns(c_cs_ns), .sck_ns(c_sck_ns), .sdo_n(c_sdo_n), .motor_ns(c_motor_ns),
         .step_n(sd_step_n), .dir_n(sd_dir_n),
         .pol_nscs_s(gconf_nx[2]), .pol_sck_s(gconf_nx[3]), .cs_com_ind(gconf_nx[7]),
         .refmux(gconf_nx[20]), .inv_ref(ifconf_nx[0]), .inv_stp(ifconf_nx[3]),

@@ -367,7 +367,7 @@ impl Tmc429 {
     /// One edge of a copy `c` of the driver chain (with a copy `g` of the global registers) in
     /// the world of the current state: its RAM, motors, current scales, ramp ticks and SDI_S.
     /// This is the chain's edge of [`Tmc429::tick`] (C80–C89); nothing happens when powered
-    /// down (C66). Gives the RTL's next-state outputs (`cs_n`, `take`, ...) for test vectors.
+    /// down (C66). Gives the RTL's next-state outputs (`cs_ns`, `take`, ...) for test vectors.
     pub fn chain_step(&self, c: &mut chain::Chain, g: &mut Global) {
         if self.power_down || self.chip == Chip::Tmc4210 {
             return;

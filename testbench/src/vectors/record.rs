@@ -200,10 +200,10 @@ pub fn chain_layout() -> Layout {
         output("sck", 1),
         output("sdo", 1),
         output("motor", 2),
-        output("cs_n", 1),
-        output("sck_n", 1),
+        output("cs_ns", 1),
+        output("sck_ns", 1),
         output("sdo_n", 1),
-        output("motor_n", 2),
+        output("motor_ns", 2),
         output("state", 3),
         output("cidx", 6),
         output("bits", 7),
@@ -273,10 +273,12 @@ impl ChainPins {
             new.sck as u64,
             new.sdo as u64,
             new.motor as u64,
-            d.cs as u64,
-            d.sck as u64,
+            // the next CS/SCK/motor unless a datagram starts: at a start (from IDLE or the end
+            // of CSOFF) they would hold
+            if take { new.cs } else { d.cs } as u64,
+            if take { new.sck } else { d.sck } as u64,
             d.sdo as u64,
-            d.motor as u64,
+            if take { new.motor } else { d.motor } as u64,
             new.state as u64,
             new.cell as u64,
             new.bits as u64,
@@ -319,8 +321,9 @@ impl Recorder for ChainPins {
     fn finish(self: Box<Self>, meta: &Meta) -> Result<Vec<AtomicFile>, String> {
         let mut meta = meta.clone();
         meta.notes.push(
-            "combinational outputs (ram_re, ram_addr, take, ret_cw, ret_dgw, *_n) of the state after the edge \
-             with the line's inputs; ram_addr compared while ram_re (0 otherwise); ram_q is the cell read at \
+            "combinational outputs (ram_re, ram_addr, take, ret_cw, ret_dgw, cs_ns, sck_ns, sdo_n, motor_ns) of \
+             the state after the edge with the line's inputs (cs_ns, sck_ns, motor_ns: the next levels unless \
+             a datagram starts); ram_addr compared while ram_re (0 otherwise); ram_q is the cell read at \
              the last edge with ram_re"
                 .into(),
         );
