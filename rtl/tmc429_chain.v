@@ -47,7 +47,7 @@ module tmc429_chain (
     input  wire [2:0]  dir,            // direction of the last step, 1 = negative
     input  wire [23:0] ustep,          // full-wave indices {m2, m1, m0}
     input  wire [8:0]  i_scale,        // selected current scales {m2, m1, m0}
-    input  wire [2:0]  ramp_tick,      // ramp ticks of this edge (C40)
+    input  wire [2:0]  ramp_tick_nx,   // ramp ticks of the next edge (C40)
     // global registers, old state
     input  wire        clk2_div_we,    // a µC write stores clk2_div_wd in this edge
     input  wire [7:0]  clk2_div_wd,    // clk2_div as that write stores it (timing registers)
@@ -55,7 +55,7 @@ module tmc429_chain (
     input  wire        pol_ph_ab,
     input  wire        pol_fd_ab,
     input  wire        pol_dac_ab,
-    input  wire        cont_update,
+    input  wire        cont_update_nx, // cont_update of the new state (after this edge's write)
     input  wire        cw,             // cover datagram waiting
     input  wire        dgw,            // datagram_low/high_word write waiting (C88)
     input  wire [5:0]  cover_pos,
@@ -163,10 +163,21 @@ module tmc429_chain (
     wire       bit_now = cov_sel ? cov_bit : sig_bit;
 
     // ---- requests (C83) ---------------------------------------------------------------------
+    // The ramp ticks and cont_update come as the values of the next edge and are registered
+    // here (ramp_tick, cont_update: equal to the register file's), so that the wrap of a
+    // continuous-update counter is a flip-flop formed one edge ahead and `request`, an OR of
+    // flip-flops, is one LUT level before `start`.
+    reg  [2:0] ramp_tick;
+    reg        cont_update;
     wire [2:0] cu_tick = ramp_tick & {3{cont_update}};
     reg  [2:0] cupd_top;                // counter at 1023 (registered compare)
-    wire [2:0] wrap    = cu_tick & cupd_top;
-    wire       request = req | (|step) | cw | (|wrap);
+    wire [2:0] cupd_top_n = (run & spi_mode)
+                          ? {cupd2 + {9'd0, cu_tick[2]} == 10'd1023,
+                             cupd1 + {9'd0, cu_tick[1]} == 10'd1023,
+                             cupd0 + {9'd0, cu_tick[0]} == 10'd1023}
+                          : cupd_top;
+    reg        wrap;                    // = |(cu_tick & cupd_top)
+    wire       request = req | (|step) | cw | wrap;
     wire [1:0] lsmd_e  = (lsmd == 2'd3) ? 2'd2 : lsmd;       // C86: LSMD 3 acts as 2
 
     // ---- next state -------------------------------------------------------------------------
@@ -260,6 +271,7 @@ module tmc429_chain (
             cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
             cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b0;
             cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;  cupd_top <= 3'd0;
+            ramp_tick <= 3'd0;  cont_update <= 1'b0;  wrap <= 1'b0;
         end else begin
             state <= state_n;  cnt <= cnt_n;  cidx <= cidx_n;  motor <= motor_n;
             can_start <= can_start_n;
@@ -270,10 +282,11 @@ module tmc429_chain (
                 cupd0 <= cupd0 + {9'd0, cu_tick[0]};
                 cupd1 <= cupd1 + {9'd0, cu_tick[1]};
                 cupd2 <= cupd2 + {9'd0, cu_tick[2]};
-                cupd_top <= {cupd2 + {9'd0, cu_tick[2]} == 10'd1023,
-                             cupd1 + {9'd0, cu_tick[1]} == 10'd1023,
-                             cupd0 + {9'd0, cu_tick[0]} == 10'd1023};
             end
+            cupd_top <= cupd_top_n;
+            ramp_tick <= ramp_tick_nx;
+            cont_update <= cont_update_nx;
+            wrap <= |(ramp_tick_nx & {3{cont_update_nx}} & cupd_top_n);
         end
     end
 

@@ -49,6 +49,7 @@ module tmc429_regfile #(
     output wire [8:0]  drv_ifconf_nx,
     output wire [59:0] drv_conf,       // motor m in [20m+19:20m]: {is_*, a_threshold}
     output wire [2:0]  drv_ramp_tick,  // phase 30 of a ramp frame of motor m (not gated by run)
+    output wire [2:0]  drv_ramp_tick_nx, // drv_ramp_tick of the next edge (its register's input)
     output wire        drv_cw,         // cover datagram waiting
     output wire        drv_dgw,        // datagram-word write waiting
     output wire [5:0]  drv_cover_pos,
@@ -160,7 +161,9 @@ module tmc429_regfile #(
     wire [11:0] m_pulse_div, m_ramp_div;
     wire [35:0] m_vt;
     reg  [2:0]  ramp_tick, pulse_tick;
+    wire [2:0]  ramp_tick_nx;
     assign drv_ramp_tick = ramp_tick;
+    assign drv_ramp_tick_nx = ramp_tick_nx;
 
     genvar g;
     generate
@@ -169,12 +172,13 @@ module tmc429_regfile #(
             wire w_div = wr & present & (a7[6:4] == g) & (jdx == 4'd12);
             wire [3:0] rdiv_nx = w_div ? wdata[11:8] : m_ramp_div[4*g+3:4*g];
             wire [3:0] pdiv_nx = w_div ? wdata[15:12] : m_pulse_div[4*g+3:4*g];
+            assign ramp_tick_nx[g] = ph_ramp_nx & (ones_d >= rdiv_nx);
             always @(posedge clk) begin
                 if (rst) begin
                     ramp_tick[g] <= 1'b0;
                     pulse_tick[g] <= 1'b0;
                 end else begin
-                    ramp_tick[g] <= ph_ramp_nx & (ones_d >= rdiv_nx);
+                    ramp_tick[g] <= ramp_tick_nx[g];
                     pulse_tick[g] <= ph_pulse_nx & (ones_d >= pdiv_nx);
                 end
             end

@@ -106,7 +106,7 @@ module tmc429_top #(
     wire [8:0]  ifconf, ifconf_nx;
     /* verilator lint_on UNUSEDSIGNAL */
     wire [59:0] drv_conf;
-    wire [2:0]  rtick;
+    wire [2:0]  rtick, rtick_nx;
     wire [19:0] drv_m0 = drv_conf[19:0], drv_m1 = drv_conf[39:20], drv_m2 = drv_conf[59:40];
     wire [23:0] cover_datagram;
     wire        cw, dgw, take, ret_cw, ret_dgw, cover_busy, dgw_busy, ram_re;
@@ -128,6 +128,7 @@ module tmc429_top #(
         .drv_gconf(gconf), .drv_gconf_nx(gconf_nx),
         .drv_gconf_we(gconf_we), .drv_gconf_wd(gconf_wd), .drv_ifconf(ifconf),
         .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf), .drv_ramp_tick(rtick),
+        .drv_ramp_tick_nx(rtick_nx),
         .drv_cw(cw), .drv_dgw(dgw), .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
         .drv_cover_datagram(cover_datagram),
         .chain_take(take), .chain_ret_cw(ret_cw), .chain_ret_dgw(ret_dgw),
@@ -194,10 +195,10 @@ module tmc429_top #(
         .clk(clk), .rst(rst), .run(run), .spi_mode(spi_mode),
         .step(m_step), .dir(m_dir),
         .ustep({probe_m2_ustep, probe_m1_ustep, probe_m0_ustep}),
-        .i_scale({is2, is1, is0}), .ramp_tick(ramp_tick),
+        .i_scale({is2, is1, is0}), .ramp_tick_nx(rtick_nx),
         .clk2_div_we(gconf_we), .clk2_div_wd(gconf_wd[15:8]), .lsmd(gconf[1:0]),
         .pol_ph_ab(gconf[4]), .pol_fd_ab(gconf[5]), .pol_dac_ab(gconf[6]),
-        .cont_update(gconf[16]), .cw(cw), .dgw(dgw),
+        .cont_update_nx(gconf_nx[16]), .cw(cw), .dgw(dgw),
         .cover_pos(cover_pos), .cover_len(cover_len), .cover_datagram(cover_datagram),
         .sdi_s(sdi_s_q),
         .ram_re(ram_re), .ram_addr(ram_addr), .ram_q(ram_q),

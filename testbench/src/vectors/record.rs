@@ -173,14 +173,14 @@ pub fn chain_layout() -> Layout {
         input("dir", 3),
         input("ustep", 24),
         input("i_scale", 9),
-        input("ramp_tick", 3),
+        input("ramp_tick_nx", 3),
         input("clk2_div_we", 1),
         input("clk2_div_wd", 8),
         input("lsmd", 2),
         input("pol_ph_ab", 1),
         input("pol_fd_ab", 1),
         input("pol_dac_ab", 1),
-        input("cont_update", 1),
+        input("cont_update_nx", 1),
         input("cw", 1),
         input("dgw", 1),
         input("cover_pos", 6),
@@ -233,7 +233,7 @@ impl ChainPins {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn line(&mut self, rst: bool, i: &chain::ChainInputs, ram_q: u8, clk2_div_w: Option<u8>, new: &chain::Chain, d: &chain::Chain, readback: u64) -> Result<(), String> {
+    fn line(&mut self, rst: bool, i: &chain::ChainInputs, nx: &chain::ChainInputs, ram_q: u8, clk2_div_w: Option<u8>, new: &chain::Chain, d: &chain::Chain, readback: u64) -> Result<(), String> {
         let rd = if i.run && i.spi_mode { chain::ram_read(new, ram_q) } else { None };
         let abort = i.run && !i.spi_mode && (new.state != chain::IDLE || new.cs || new.req || new.stepped != 0);
         let take = d.state == chain::SETUP && new.state != chain::SETUP;
@@ -246,14 +246,14 @@ impl ChainPins {
             i.dir as u64,
             tri(i.ustep, 8),
             tri(i.i_scale, 3),
-            i.ramp_tick as u64,
+            nx.ramp_tick as u64,
             clk2_div_w.is_some() as u64,
             clk2_div_w.unwrap_or(0) as u64,
             i.lsmd as u64,
             i.pol_ph_ab as u64,
             i.pol_fd_ab as u64,
             i.pol_dac_ab as u64,
-            i.cont_update as u64,
+            nx.cont_update as u64,
             i.cw as u64,
             i.dgw as u64,
             i.cover_pos as u64,
@@ -291,7 +291,7 @@ impl ChainPins {
 impl Recorder for ChainPins {
     fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
         let c = *chip.chain();
-        self.line(true, &Default::default(), 0, None, &c, &c, chip.global().readback)?;
+        self.line(true, &Default::default(), &Default::default(), 0, None, &c, &c, chip.global().readback)?;
         self.pre = Some(Box::new(chip.clone()));
         self.pre_i = chip.chain_inputs();
         self.ram_q = 0;
@@ -308,7 +308,8 @@ impl Recorder for ChainPins {
         let post_i = chip.chain_inputs();
         // the timing registers load when clk2_div changes (a write of the same value is no change)
         let w = (post_i.clk2_div != i.clk2_div).then_some(post_i.clk2_div);
-        self.line(false, &i, q, w, &new, &d, chip.global().readback)?;
+        // ramp_tick_nx, cont_update_nx: the inputs of the next edge (the RTL registers them)
+        self.line(false, &i, &post_i, q, w, &new, &d, chip.global().readback)?;
         if i.run && i.spi_mode {
             if let Some((_, cfg)) = chain::ram_read(pre.chain(), q) {
                 self.ram_q = if cfg { new.cfg } else { new.lut };
