@@ -23,12 +23,8 @@ use std::process::Command;
 
 /// (prefix, CHIP parameter, extra Verilog defines); each is built as `prefix` (no trace) and
 /// `prefix_tr` (`--trace`).
-const VARIANTS: &[(&str, u32, &[&str])] = &[
-    ("Vtmc429_428", 0, &[]),
-    ("Vtmc429_429", 1, &[]),
-    ("Vtmc429_4210", 2, &[]),
-    ("Vtmc429_429_bug_status", 1, &["PLANT_BUG_STATUS"]),
-];
+const VARIANTS: &[(&str, u32, &[&str])] =
+    &[("Vtmc429_428", 0, &[]), ("Vtmc429_429", 1, &[]), ("Vtmc429_4210", 2, &[]), ("Vtmc429_429_bug_status", 1, &["PLANT_BUG_STATUS"])];
 
 const VERILATOR_INCLUDE: &str = "/usr/share/verilator/include";
 
@@ -51,10 +47,7 @@ fn main() {
     let mut sources: Vec<PathBuf> = fs::read_dir(&rtl_dir)
         .unwrap_or_else(|e| panic!("cannot read {}: {e}", rtl_dir.display()))
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| {
-            p.extension().is_some_and(|x| x == "v")
-                && p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("tmc429_"))
-        })
+        .filter(|p| p.extension().is_some_and(|x| x == "v") && p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("tmc429_")))
         .collect();
     sources.sort();
     println!("cargo:rerun-if-changed={}", rtl_dir.display());
@@ -94,9 +87,7 @@ fn main() {
                 cmd.arg(format!("-D{d}"));
             }
             cmd.args(&sources);
-            let status = cmd.status().unwrap_or_else(|e| {
-                panic!("cannot run `{verilator}` ({e}); install Verilator 5 (scripts/setup)")
-            });
+            let status = cmd.status().unwrap_or_else(|e| panic!("cannot run `{verilator}` ({e}); install Verilator 5 (scripts/setup)"));
             assert!(status.success(), "verilator failed for {prefix}");
             if !traced {
                 falling_edge_flag &= has_trigger_flag(&mdir, &prefix);
@@ -106,14 +97,8 @@ fn main() {
     }
 
     let inc = Path::new(VERILATOR_INCLUDE);
-    let defines = [
-        ("VM_COVERAGE", "0"),
-        ("VM_SC", "0"),
-        ("VM_TRACE", "1"),
-        ("VM_TRACE_VCD", "1"),
-        ("VM_TRACE_FST", "0"),
-        ("VM_TIMING", "0"),
-    ];
+    let defines =
+        [("VM_COVERAGE", "0"), ("VM_SC", "0"), ("VM_TRACE", "1"), ("VM_TRACE_VCD", "1"), ("VM_TRACE_FST", "0"), ("VM_TIMING", "0")];
     // The models and Verilator's runtime at -O1 (see the top of this file), as objects of the
     // bridge's library.
     let mut models = cc::Build::new();
@@ -189,8 +174,7 @@ fn no_rtl(verilator: &str) {
 /// member `__Vtrigrprev__TOP__clk` of its root class (Verilator 5.006; other versions name it
 /// otherwise, and the bridge then evaluates the falling edge like any other).
 fn has_trigger_flag(mdir: &Path, prefix: &str) -> bool {
-    fs::read_to_string(mdir.join(format!("{prefix}___024root.h")))
-        .is_ok_and(|h| h.contains("CData/*0:0*/ __Vtrigrprev__TOP__clk;"))
+    fs::read_to_string(mdir.join(format!("{prefix}___024root.h"))).is_ok_and(|h| h.contains("CData/*0:0*/ __Vtrigrprev__TOP__clk;"))
 }
 
 /// The .cpp files Verilator generated for one prefix.

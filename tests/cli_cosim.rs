@@ -8,10 +8,7 @@ fn tmc429() -> Command {
 
 #[test]
 fn clean_run_exits_0_with_summary_and_coverage() {
-    let out = tmc429()
-        .args(["cosim", "--chip", "tmc4210", "--seed", "3", "--cycles", "50000", "--coverage"])
-        .output()
-        .unwrap();
+    let out = tmc429().args(["cosim", "--chip", "tmc4210", "--seed", "3", "--cycles", "50000", "--coverage"]).output().unwrap();
     let s = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{s}");
     assert!(s.starts_with("cosim tmc4210: seed 3\ncycles:       50000\n"), "{s}");

@@ -271,7 +271,9 @@ fn demo_on_the_model() {
     // the vectors: the last ramp tick of each motor (cycle, motor, mode, x_target, x_actual,
     // v_internal …) at rest on its target, and one CSV row per driver-chain datagram counted
     let ramp = std::fs::read_to_string(d.join("ramp-demo-tmc429.csv")).unwrap();
-    for (m, want) in [(0, "1919999,0,RAMP,-300,-300,0,0,0,0,0"), (1, "1919999,1,SOFT,600,600,0,0,0,0,0"), (2, "1919999,2,RAMP,300,300,0,0,0,0,0")] {
+    for (m, want) in
+        [(0, "1919999,0,RAMP,-300,-300,0,0,0,0,0"), (1, "1919999,1,SOFT,600,600,0,0,0,0,0"), (2, "1919999,2,RAMP,300,300,0,0,0,0,0")]
+    {
         let last = ramp.lines().filter(|l| l.split(',').nth(1) == Some(&m.to_string())).last().unwrap();
         assert_eq!(last, want);
     }
@@ -311,7 +313,21 @@ fn demo_print_is_the_bundled_file() {
 /// `tmc429 calc` from registers: spec-digest §5.6 (R, ΔR, S at 16 MHz) and §5.5 (pmulpdiv.c).
 #[test]
 fn calc_from_registers_reproduces_the_datasheet() {
-    let o = tmc429(&["calc", "--fclk", "16MHz", "--pulse-div", "7", "--ramp-div", "7", "--v-max", "1000", "--a-max", "100", "--p-reduction", "0.05"]);
+    let o = tmc429(&[
+        "calc",
+        "--fclk",
+        "16MHz",
+        "--pulse-div",
+        "7",
+        "--ramp-div",
+        "7",
+        "--v-max",
+        "1000",
+        "--a-max",
+        "100",
+        "--p-reduction",
+        "0.05",
+    ]);
     let out = text(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     assert!(out.contains("step rate     1907.35 Hz microsteps, 1907.35 Hz full steps\n"), "{out}");

@@ -108,6 +108,9 @@ fn events_in_cycle_order() {
     let int_lines: Vec<&str> = lines.iter().copied().filter(|l| l.starts_with("int ")).collect();
     assert_eq!(int_lines.len(), 2, "{out}");
     assert!(int_lines[0].ends_with(" 1") && int_lines[1].ends_with(" 0"), "{out}");
-    let cycles: Vec<u64> = lines.iter().map(|l| l.split_whitespace().nth(if l.starts_with(char::is_numeric) { 0 } else { 1 }).unwrap().parse().unwrap()).collect();
+    let cycles: Vec<u64> = lines
+        .iter()
+        .map(|l| l.split_whitespace().nth(if l.starts_with(char::is_numeric) { 0 } else { 1 }).unwrap().parse().unwrap())
+        .collect();
     assert!(cycles.windows(2).all(|w| w[0] <= w[1]), "cycle order: {out}");
 }

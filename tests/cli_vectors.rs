@@ -79,9 +79,7 @@ fn replay(vvp: &Path, stem: &Path, hex: Option<&Path>) -> Vec<String> {
 
 fn meta(stem: &Path, key: &str) -> String {
     let t = std::fs::read_to_string(stem.with_extension("meta")).unwrap();
-    t.lines()
-        .find_map(|l| l.strip_prefix(&format!("{key} ")).map(str::to_string))
-        .unwrap_or_else(|| panic!("no {key} in .meta"))
+    t.lines().find_map(|l| l.strip_prefix(&format!("{key} ")).map(str::to_string)).unwrap_or_else(|| panic!("no {key} in .meta"))
 }
 
 /// The chip-hold vectors replay clean; with PLANT_BUG_STATUS (CDGW ignores the datagram-word
@@ -144,13 +142,29 @@ fn corrupt_vector_files_are_reported() {
         p
     };
     let cases: [(&str, &dyn Fn(&mut Vec<String>), String); 4] = [
-        ("trunc.hex", &|v| { v[99].pop(); }, "line 100: 7 characters, expected 8 hex digits".into()),
+        (
+            "trunc.hex",
+            &|v| {
+                v[99].pop();
+            },
+            "line 100: 7 characters, expected 8 hex digits".into(),
+        ),
         ("wide.hex", &|v| v[9].push('0'), "line 10: 9 characters, expected 8 hex digits".into()),
-        ("digit.hex", &|v| {
-            let d = if &v[499][3..4] == "0" { "1" } else { "0" };
-            v[499].replace_range(3..4, d)
-        }, "line 500: check digit wrong".into()),
-        ("short.hex", &|v| { v.pop(); }, format!("has {} lines", cycles - 1)),
+        (
+            "digit.hex",
+            &|v| {
+                let d = if &v[499][3..4] == "0" { "1" } else { "0" };
+                v[499].replace_range(3..4, d)
+            },
+            "line 500: check digit wrong".into(),
+        ),
+        (
+            "short.hex",
+            &|v| {
+                v.pop();
+            },
+            format!("has {} lines", cycles - 1),
+        ),
     ];
     for (name, f, msg) in cases {
         let p = write(name, f);
@@ -167,8 +181,7 @@ fn spi_csv_has_the_datasheet_examples() {
     let dir = tmpdir("spi");
     export(&dir, &["--unit", "spi", "--scenario", "datasheet", "--format", "csv"]);
     let rows = csv(&dir.join("spi-datasheet-tmc429.csv"));
-    let got: Vec<(&str, &str, &str, &str)> =
-        rows.iter().map(|r| (r[3].as_str(), r[4].as_str(), r[5].as_str(), r[6].as_str())).collect();
+    let got: Vec<(&str, &str, &str, &str)> = rows.iter().map(|r| (r[3].as_str(), r[4].as_str(), r[5].as_str(), r[6].as_str())).collect();
     assert_eq!(
         got,
         [
@@ -194,10 +207,7 @@ fn chain_csv_has_the_table_11_2_datagrams_and_the_cover() {
     export(&dir, &["--unit", "chain", "--scenario", "chain-datasheet"]);
     let rows = csv(&dir.join("chain-chain-datasheet-tmc429.csv"));
     let bits: Vec<(&str, &str)> = rows.iter().map(|r| (r[2].as_str(), r[3].as_str())).collect();
-    assert_eq!(
-        bits,
-        [("36", "05F05F07F"), ("36", "35D35D37D"), ("36", "1CF1CF1EF"), ("36", "55805F07F"), ("36", "ABC05F07F")]
-    );
+    assert_eq!(bits, [("36", "05F05F07F"), ("36", "35D35D37D"), ("36", "1CF1CF1EF"), ("36", "55805F07F"), ("36", "ABC05F07F")]);
     // w = 16: DAC_A = sin LUT[16] = 24, DAC_B = LUT[48] = 59 (Table 12-2); i_scale %100 halves them
     assert_eq!(&rows[1][6..12], ["24", "1", "0", "59", "1", "1"]);
     assert_eq!(&rows[2][6..12], ["12", "1", "0", "29", "1", "1"]);
@@ -375,7 +385,15 @@ fn toml_scenario_vectors() {
 
     export(&dir, &["--unit", "chip", "--scenario", &f]);
     let stem = dir.join("chip-ramp-move-tmc429");
-    for (k, v) in [("cycles", "1920001"), ("fclk", "32000000"), ("scenario", "ramp-move"), ("chip", "tmc429"), ("replay", "ready"), ("mask", "7FF"), ("not_compared", "-")] {
+    for (k, v) in [
+        ("cycles", "1920001"),
+        ("fclk", "32000000"),
+        ("scenario", "ramp-move"),
+        ("chip", "tmc429"),
+        ("replay", "ready"),
+        ("mask", "7FF"),
+        ("not_compared", "-"),
+    ] {
         assert_eq!(meta(&stem, k), v, "{k}");
     }
     assert_eq!(std::fs::read_to_string(stem.with_extension("hex")).unwrap().lines().count(), 1_920_001);
@@ -438,11 +456,19 @@ fn run_writes_the_vectors_of_a_scenario() {
     let o = tmc429().arg("run").arg(&sc).arg("--vectors").arg(&model).output().unwrap();
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{out}{}", String::from_utf8_lossy(&o.stderr));
-    let names = ["chip-regs-tmc429.hex", "chip-regs-tmc429.cols", "chip-regs-tmc429.meta", "spi-regs-tmc429.csv", "ramp-regs-tmc429.csv", "chain-regs-tmc429.csv"];
+    let names = [
+        "chip-regs-tmc429.hex",
+        "chip-regs-tmc429.cols",
+        "chip-regs-tmc429.meta",
+        "spi-regs-tmc429.csv",
+        "ramp-regs-tmc429.csv",
+        "chain-regs-tmc429.csv",
+    ];
     let listed: Vec<&str> = out.lines().filter_map(|l| l.strip_prefix("vectors: ")).collect();
     let want: Vec<String> = names.iter().map(|n| model.join(n).display().to_string()).collect();
     assert_eq!(listed, want);
-    let mut files: Vec<String> = std::fs::read_dir(&model).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    let mut files: Vec<String> =
+        std::fs::read_dir(&model).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     files.sort();
     let mut sorted = names.to_vec();
     sorted.sort();
@@ -456,7 +482,9 @@ fn run_writes_the_vectors_of_a_scenario() {
 
     // the same files from `tmc429 vectors --scenario FILE.toml`, one unit at a time
     let one = dir.join("one");
-    for (unit, stem) in [("chip", "chip-regs-tmc429"), ("spi", "spi-regs-tmc429"), ("ramp", "ramp-regs-tmc429"), ("chain", "chain-regs-tmc429")] {
+    for (unit, stem) in
+        [("chip", "chip-regs-tmc429"), ("spi", "spi-regs-tmc429"), ("ramp", "ramp-regs-tmc429"), ("chain", "chain-regs-tmc429")]
+    {
         let fmt = if unit == "chip" { "pins" } else { "csv" };
         export(&one, &["--unit", unit, "--format", fmt, "--scenario", sc.to_str().unwrap()]);
         for ext in ["hex", "cols", "meta", "csv"] {

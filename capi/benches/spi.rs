@@ -24,21 +24,11 @@ fn traffic() -> Vec<(u32, usize)> {
     }
     t.push((0x3F << 25 | 0xF02, 4));
     for m in 0..3u32 {
-        for (idx, v) in [
-            (2, 1),
-            (3, 1000),
-            (12, 0x3706),
-            (6, 100),
-            (9, 0xBD09),
-            (10, 0x300),
-            (11, 0x100),
-        ] {
+        for (idx, v) in [(2, 1), (3, 1000), (12, 0x3706), (6, 100), (9, 0xBD09), (10, 0x300), (11, 0x100)] {
             t.push(((m << 4 | idx) << 25 | v, 4));
         }
     }
-    for a7 in [
-        0x02u32, 0x03, 0x06, 0x09, 0x0C, 0x39, 0x3F, 0x40, 0x5F, 0x7F,
-    ] {
+    for a7 in [0x02u32, 0x03, 0x06, 0x09, 0x0C, 0x39, 0x3F, 0x40, 0x5F, 0x7F] {
         t.push((a7 << 25 | 1 << 24, 4));
     }
     for _ in 0..8 {
@@ -64,10 +54,7 @@ fn bench(c: &mut Criterion) {
         })
     });
 
-    for (name, events) in [
-        ("c_spi_transfer_events_on", 1),
-        ("c_spi_transfer_events_off", 0),
-    ] {
+    for (name, events) in [("c_spi_transfer_events_on", 1), ("c_spi_transfer_events_off", 0)] {
         let bytes: Vec<([u8; 4], usize)> = t
             .iter()
             .map(|&(v, n)| {

@@ -179,19 +179,10 @@ fn attach_decoder(host: &mut Host, queue: &SharedQueue) {
 
 impl Sim {
     fn new(chip: Chip, fclk: u64) -> Sim {
-        let queue = Arc::new(Mutex::new(Queue {
-            events: VecDeque::new(),
-            dropped: 0,
-        }));
+        let queue = Arc::new(Mutex::new(Queue { events: VecDeque::new(), dropped: 0 }));
         let mut host = Host::new(chip);
         attach_decoder(&mut host, &queue);
-        Sim {
-            host,
-            fclk,
-            us_rem: 0,
-            queue,
-            events_on: true,
-        }
+        Sim { host, fclk, us_rem: 0, queue, events_on: true }
     }
 }
 
@@ -200,10 +191,7 @@ struct Registry {
     map: BTreeMap<u64, Arc<Mutex<Sim>>>,
 }
 
-static REGISTRY: Mutex<Registry> = Mutex::new(Registry {
-    next: 1,
-    map: BTreeMap::new(),
-});
+static REGISTRY: Mutex<Registry> = Mutex::new(Registry { next: 1, map: BTreeMap::new() });
 
 fn registry() -> std::sync::MutexGuard<'static, Registry> {
     // Nothing panics while the registry lock is held; a poisoned lock still holds a valid map.
@@ -235,10 +223,7 @@ unsafe fn out_ref<'a, T>(p: *mut T) -> Result<&'a mut T, c_int> {
 }
 
 fn chip_of(variant: c_int) -> Result<Chip, c_int> {
-    u32::try_from(variant)
-        .ok()
-        .and_then(Chip::from_rtl_param)
-        .ok_or(TMC429_ERR_ARG)
+    u32::try_from(variant).ok().and_then(Chip::from_rtl_param).ok_or(TMC429_ERR_ARG)
 }
 
 fn sext24(x: u32) -> i32 {
@@ -260,9 +245,7 @@ pub extern "C" fn tmc429_strerror(code: c_int) -> *const c_char {
     let s: &'static [u8] = match code {
         TMC429_ERR_NULL => b"null pointer argument\0",
         TMC429_ERR_HANDLE => b"invalid handle (zero, never created or destroyed)\0",
-        TMC429_ERR_LENGTH => {
-            b"length out of range (SPI transfer: 1..4 bytes) or buffer too small\0"
-        }
+        TMC429_ERR_LENGTH => b"length out of range (SPI transfer: 1..4 bytes) or buffer too small\0",
         TMC429_ERR_ARG => b"argument out of range\0",
         TMC429_ERR_INTERNAL => b"internal error (handle retired)\0",
         c if c >= 0 => b"success\0",
@@ -335,14 +318,7 @@ pub extern "C" fn tmc429_reset(h: u64) -> c_int {
 /// SCK_C half period in CLK cycles (at least 3, TMC428 Table 6-1).
 #[no_mangle]
 pub extern "C" fn tmc429_set_sck_half(h: u64, clk_cycles: u32) -> c_int {
-    guard(|| {
-        with_sim(h, |s| {
-            s.host
-                .set_sck_half(clk_cycles)
-                .map(|_| TMC429_OK)
-                .map_err(|_| TMC429_ERR_ARG)
-        })
-    })
+    guard(|| with_sim(h, |s| s.host.set_sck_half(clk_cycles).map(|_| TMC429_OK).map_err(|_| TMC429_ERR_ARG)))
 }
 
 /// SCK_C frequency in Hz: the half period becomes ceil(fclk / (2·hz)) CLK cycles (the real rate
@@ -363,10 +339,7 @@ pub extern "C" fn tmc429_set_sck_hz(h: u64, hz: u32) -> c_int {
             if half < MIN_SCK_HALF {
                 return Err(TMC429_ERR_ARG);
             }
-            s.host
-                .set_sck_half(half)
-                .map(|_| TMC429_OK)
-                .map_err(|_| TMC429_ERR_ARG)
+            s.host.set_sck_half(half).map(|_| TMC429_OK).map_err(|_| TMC429_ERR_ARG)
         })
     })
 }
@@ -396,12 +369,7 @@ pub unsafe extern "C" fn tmc429_get_sck_half(h: u64, out: *mut u32) -> c_int {
 /// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
 /// documented number of elements.
 #[no_mangle]
-pub unsafe extern "C" fn tmc429_spi_transfer(
-    h: u64,
-    tx: *const u8,
-    rx: *mut u8,
-    len: usize,
-) -> c_int {
+pub unsafe extern "C" fn tmc429_spi_transfer(h: u64, tx: *const u8, rx: *mut u8, len: usize) -> c_int {
     guard(|| {
         if tx.is_null() || rx.is_null() {
             return Err(TMC429_ERR_NULL);
@@ -552,11 +520,7 @@ pub unsafe extern "C" fn tmc429_get_step_dir(h: u64, step: *mut u8, dir: *mut u8
 /// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
 /// documented number of elements.
 #[no_mangle]
-pub unsafe extern "C" fn tmc429_get_motor_probe(
-    h: u64,
-    motor: c_uint,
-    out: *mut tmc429_motor_probe_t,
-) -> c_int {
+pub unsafe extern "C" fn tmc429_get_motor_probe(h: u64, motor: c_uint, out: *mut tmc429_motor_probe_t) -> c_int {
     guard(|| {
         let out = out_ref(out)?;
         with_sim(h, |s| {
@@ -644,11 +608,7 @@ pub unsafe extern "C" fn tmc429_events_pending(h: u64, out: *mut usize) -> c_int
 /// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
 /// documented number of elements.
 #[no_mangle]
-pub unsafe extern "C" fn tmc429_events_drain(
-    h: u64,
-    buf: *mut tmc429_event_t,
-    cap: usize,
-) -> c_int {
+pub unsafe extern "C" fn tmc429_events_drain(h: u64, buf: *mut tmc429_event_t, cap: usize) -> c_int {
     guard(|| {
         if buf.is_null() {
             return Err(TMC429_ERR_NULL);
@@ -693,11 +653,7 @@ pub unsafe extern "C" fn tmc429_events_dropped(h: u64, out: *mut u64) -> c_int {
 /// Each pointer must be NULL (reported as `TMC429_ERR_NULL`) or valid and aligned for the
 /// documented number of elements.
 #[no_mangle]
-pub unsafe extern "C" fn tmc429_event_format(
-    ev: *const tmc429_event_t,
-    buf: *mut c_char,
-    cap: usize,
-) -> c_int {
+pub unsafe extern "C" fn tmc429_event_format(ev: *const tmc429_event_t, buf: *mut c_char, cap: usize) -> c_int {
     guard(|| {
         // SAFETY: non-null checked; validity is the caller's contract.
         let ev = unsafe { ev.as_ref() }.ok_or(TMC429_ERR_NULL)?;
@@ -724,19 +680,14 @@ pub unsafe extern "C" fn tmc429_event_format(
 
 /// The C form of an event.
 pub fn to_c_event(e: &Event) -> tmc429_event_t {
-    let mut c = tmc429_event_t {
-        cycle: e.cycle(),
-        ..Default::default()
-    };
+    let mut c = tmc429_event_t { cycle: e.cycle(), ..Default::default() };
     match *e {
         Event::Chain { nbits, bits, .. } => {
             c.kind = TMC429_EVENT_CHAIN;
             c.nbits = nbits;
             c.bits = bits;
         }
-        Event::Step {
-            motor, negative, ..
-        } => {
+        Event::Step { motor, negative, .. } => {
             c.kind = TMC429_EVENT_STEP;
             c.motor = motor;
             c.negative = negative as u8;
@@ -753,20 +704,9 @@ pub fn to_c_event(e: &Event) -> tmc429_event_t {
 pub fn from_c_event(c: &tmc429_event_t) -> Result<Event, c_int> {
     let cycle = c.cycle;
     match c.kind {
-        TMC429_EVENT_CHAIN => Ok(Event::Chain {
-            cycle,
-            nbits: c.nbits,
-            bits: c.bits,
-        }),
-        TMC429_EVENT_STEP if c.motor <= 2 && c.negative <= 1 => Ok(Event::Step {
-            cycle,
-            motor: c.motor,
-            negative: c.negative != 0,
-        }),
-        TMC429_EVENT_INT if c.level <= 1 => Ok(Event::Int {
-            cycle,
-            level: c.level != 0,
-        }),
+        TMC429_EVENT_CHAIN => Ok(Event::Chain { cycle, nbits: c.nbits, bits: c.bits }),
+        TMC429_EVENT_STEP if c.motor <= 2 && c.negative <= 1 => Ok(Event::Step { cycle, motor: c.motor, negative: c.negative != 0 }),
+        TMC429_EVENT_INT if c.level <= 1 => Ok(Event::Int { cycle, level: c.level != 0 }),
         _ => Err(TMC429_ERR_ARG),
     }
 }

@@ -21,10 +21,7 @@ fn create(variant: i32, fclk: u32) -> u64 {
 fn xfer(h: u64, tx: &[u8]) -> Vec<u8> {
     unsafe {
         let mut rx = vec![0u8; tx.len()];
-        assert_eq!(
-            tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), tx.len()),
-            TMC429_OK
-        );
+        assert_eq!(tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), tx.len()), TMC429_OK);
         rx
     }
 }
@@ -64,10 +61,7 @@ fn datasheet_6_5_datagram_examples() {
         assert_eq!(xfer(h, &[0x00]), vec![0x15]);
         // rx may alias tx.
         let mut b = [0x1Bu8, 0, 0, 0];
-        assert_eq!(
-            tmc429_spi_transfer(h, b.as_ptr(), b.as_mut_ptr(), 4),
-            TMC429_OK
-        );
+        assert_eq!(tmc429_spi_transfer(h, b.as_ptr(), b.as_mut_ptr(), 4), TMC429_OK);
         assert_eq!(b, [0x15, 0x00, 0x01, 0x23]);
         assert_eq!(tmc429_destroy(h), TMC429_OK);
     }
@@ -86,23 +80,12 @@ fn frame_timing_and_sck_rate() {
         xfer(h, &[0]);
         assert_eq!(cycle(h), 66 * 4 + 18 * 4);
         // ceil(32 MHz / (2·hz)).
-        for (hz, want) in [
-            (4_000_000, 4),
-            (5_000_000, 4),
-            (5_333_334, 3),
-            (5_333_333, 4),
-            (4_000_001, 4),
-            (1_000_000, 16),
-        ] {
+        for (hz, want) in [(4_000_000, 4), (5_000_000, 4), (5_333_334, 3), (5_333_333, 4), (4_000_001, 4), (1_000_000, 16)] {
             assert_eq!(tmc429_set_sck_hz(h, hz), TMC429_OK);
             assert_eq!(tmc429_get_sck_half(h, &mut half), TMC429_OK);
             assert_eq!(half, want, "{hz} Hz");
         }
-        assert_eq!(
-            tmc429_set_sck_hz(h, 5_333_335),
-            TMC429_ERR_ARG,
-            "above fclk/6"
-        );
+        assert_eq!(tmc429_set_sck_hz(h, 5_333_335), TMC429_ERR_ARG, "above fclk/6");
         assert_eq!(tmc429_set_sck_hz(h, 0), TMC429_ERR_ARG);
         assert_eq!(tmc429_set_sck_half(h, 2), TMC429_ERR_ARG);
         assert_eq!(tmc429_set_sck_half(h, 3), TMC429_OK);
@@ -230,37 +213,16 @@ fn misuse_returns_errors() {
         assert_eq!(tmc429_create(1, 0, null_mut()), TMC429_ERR_NULL);
         assert_eq!(tmc429_create(3, 0, &mut h), TMC429_ERR_ARG);
         assert_eq!(tmc429_create(-1, 0, &mut h), TMC429_ERR_ARG);
-        assert_eq!(
-            tmc429_create(TMC429_CHIP_TMC428, 16_000_001, &mut h),
-            TMC429_ERR_ARG
-        );
-        assert_eq!(
-            tmc429_create(TMC429_CHIP_TMC429, 32_000_001, &mut h),
-            TMC429_ERR_ARG
-        );
+        assert_eq!(tmc429_create(TMC429_CHIP_TMC428, 16_000_001, &mut h), TMC429_ERR_ARG);
+        assert_eq!(tmc429_create(TMC429_CHIP_TMC429, 32_000_001, &mut h), TMC429_ERR_ARG);
         let h = create(TMC429_CHIP_TMC429, 0);
         let tx = [0u8; 5];
         let mut rx = [0u8; 5];
-        assert_eq!(
-            tmc429_spi_transfer(h, null(), rx.as_mut_ptr(), 4),
-            TMC429_ERR_NULL
-        );
-        assert_eq!(
-            tmc429_spi_transfer(h, tx.as_ptr(), null_mut(), 4),
-            TMC429_ERR_NULL
-        );
-        assert_eq!(
-            tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), 0),
-            TMC429_ERR_LENGTH
-        );
-        assert_eq!(
-            tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), 5),
-            TMC429_ERR_LENGTH
-        );
-        assert_eq!(
-            tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), usize::MAX),
-            TMC429_ERR_LENGTH
-        );
+        assert_eq!(tmc429_spi_transfer(h, null(), rx.as_mut_ptr(), 4), TMC429_ERR_NULL);
+        assert_eq!(tmc429_spi_transfer(h, tx.as_ptr(), null_mut(), 4), TMC429_ERR_NULL);
+        assert_eq!(tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), 0), TMC429_ERR_LENGTH);
+        assert_eq!(tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), 5), TMC429_ERR_LENGTH);
+        assert_eq!(tmc429_spi_transfer(h, tx.as_ptr(), rx.as_mut_ptr(), usize::MAX), TMC429_ERR_LENGTH);
         assert_eq!(tmc429_get_cycle(h, null_mut()), TMC429_ERR_NULL);
         assert_eq!(cycle(h), 0, "no failed call advanced time");
         assert_eq!(tmc429_set_pin(h, 7, 1), TMC429_ERR_ARG);
@@ -269,59 +231,19 @@ fn misuse_returns_errors() {
         assert_eq!(tmc429_events_enable(h, 2), TMC429_ERR_ARG);
         let mut ev = [tmc429_event_t::default(); 1];
         assert_eq!(tmc429_events_drain(h, null_mut(), 1), TMC429_ERR_NULL);
-        assert_eq!(
-            tmc429_events_drain(h, ev.as_mut_ptr(), 0),
-            TMC429_ERR_LENGTH
-        );
+        assert_eq!(tmc429_events_drain(h, ev.as_mut_ptr(), 0), TMC429_ERR_LENGTH);
         let mut s = [0 as std::ffi::c_char; 64];
-        let e = tmc429_event_t {
-            kind: TMC429_EVENT_INT,
-            cycle: 7,
-            level: 1,
-            ..Default::default()
-        };
-        assert_eq!(
-            tmc429_event_format(&e, s.as_mut_ptr(), 8),
-            7,
-            "\"int 7 1\" and NUL fit in 8"
-        );
-        assert_eq!(
-            tmc429_event_format(&e, s.as_mut_ptr(), 7),
-            TMC429_ERR_LENGTH
-        );
-        assert_eq!(
-            tmc429_event_format(&e, s.as_mut_ptr(), 0),
-            TMC429_ERR_LENGTH
-        );
-        assert_eq!(
-            tmc429_event_format(null(), s.as_mut_ptr(), 64),
-            TMC429_ERR_NULL
-        );
+        let e = tmc429_event_t { kind: TMC429_EVENT_INT, cycle: 7, level: 1, ..Default::default() };
+        assert_eq!(tmc429_event_format(&e, s.as_mut_ptr(), 8), 7, "\"int 7 1\" and NUL fit in 8");
+        assert_eq!(tmc429_event_format(&e, s.as_mut_ptr(), 7), TMC429_ERR_LENGTH);
+        assert_eq!(tmc429_event_format(&e, s.as_mut_ptr(), 0), TMC429_ERR_LENGTH);
+        assert_eq!(tmc429_event_format(null(), s.as_mut_ptr(), 64), TMC429_ERR_NULL);
         assert_eq!(tmc429_event_format(&e, null_mut(), 64), TMC429_ERR_NULL);
-        let bad = tmc429_event_t {
-            kind: 3,
-            ..Default::default()
-        };
-        assert_eq!(
-            tmc429_event_format(&bad, s.as_mut_ptr(), 64),
-            TMC429_ERR_ARG
-        );
-        let huge = tmc429_event_t {
-            kind: TMC429_EVENT_CHAIN,
-            nbits: u32::MAX,
-            ..Default::default()
-        };
-        assert_eq!(
-            tmc429_event_format(&huge, s.as_mut_ptr(), 64),
-            TMC429_ERR_LENGTH
-        );
-        let chain = tmc429_event_t {
-            kind: TMC429_EVENT_CHAIN,
-            cycle: 4567,
-            nbits: 36,
-            bits: 0x8_7F87_F87F,
-            ..Default::default()
-        };
+        let bad = tmc429_event_t { kind: 3, ..Default::default() };
+        assert_eq!(tmc429_event_format(&bad, s.as_mut_ptr(), 64), TMC429_ERR_ARG);
+        let huge = tmc429_event_t { kind: TMC429_EVENT_CHAIN, nbits: u32::MAX, ..Default::default() };
+        assert_eq!(tmc429_event_format(&huge, s.as_mut_ptr(), 64), TMC429_ERR_LENGTH);
+        let chain = tmc429_event_t { kind: TMC429_EVENT_CHAIN, cycle: 4567, nbits: 36, bits: 0x8_7F87_F87F, ..Default::default() };
         let n = tmc429_event_format(&chain, s.as_mut_ptr(), 64);
         let line: String = s[..n as usize].iter().map(|&c| c as u8 as char).collect();
         assert_eq!(line, "chain 4567 36 87F87F87F");
@@ -333,30 +255,21 @@ fn misuse_returns_errors() {
             let mut c = 0u64;
             assert_eq!(tmc429_destroy(bad), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_reset(bad), TMC429_ERR_HANDLE);
-            assert_eq!(
-                tmc429_spi_transfer(bad, tx.as_ptr(), rx.as_mut_ptr(), 4),
-                TMC429_ERR_HANDLE
-            );
+            assert_eq!(tmc429_spi_transfer(bad, tx.as_ptr(), rx.as_mut_ptr(), 4), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_advance_cycles(bad, 1), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_advance_us(bad, 1), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_get_cycle(bad, &mut c), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_set_pin(bad, 0, 1), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_get_status(bad, &mut u), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_set_sck_half(bad, 4), TMC429_ERR_HANDLE);
-            assert_eq!(
-                tmc429_events_drain(bad, ev.as_mut_ptr(), 1),
-                TMC429_ERR_HANDLE
-            );
+            assert_eq!(tmc429_events_drain(bad, ev.as_mut_ptr(), 1), TMC429_ERR_HANDLE);
         }
         // A new chip never gets the old number.
         let h2 = create(TMC429_CHIP_TMC429, 0);
         assert_ne!(h2, h);
         tmc429_destroy(h2);
         let msg = std::ffi::CStr::from_ptr(tmc429_strerror(TMC429_ERR_HANDLE));
-        assert_eq!(
-            msg.to_str().unwrap(),
-            "invalid handle (zero, never created or destroyed)"
-        );
+        assert_eq!(msg.to_str().unwrap(), "invalid handle (zero, never created or destroyed)");
         assert_eq!(tmc429_abi_version(), TMC429_ABI_VERSION);
     }
 }
@@ -364,10 +277,7 @@ fn misuse_returns_errors() {
 #[test]
 fn handles_work_from_several_threads() {
     let hs: Vec<u64> = (0..4).map(|_| create(TMC429_CHIP_TMC429, 0)).collect();
-    let threads: Vec<_> = hs
-        .iter()
-        .map(|&h| std::thread::spawn(move || (0..20).all(|_| dg(h, 0x7300_0000) == 0x1542_9101)))
-        .collect();
+    let threads: Vec<_> = hs.iter().map(|&h| std::thread::spawn(move || (0..20).all(|_| dg(h, 0x7300_0000) == 0x1542_9101))).collect();
     for t in threads {
         assert!(t.join().unwrap());
     }

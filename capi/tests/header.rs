@@ -50,10 +50,7 @@ fn rust_functions() -> BTreeMap<String, Sig> {
         let head = &part[..part.find('{').unwrap()];
         let name = head[..head.find('(').unwrap()].trim().to_string();
         let args = &head[head.find('(').unwrap() + 1..head.rfind(')').unwrap()];
-        let ret = head[head.rfind(')').unwrap() + 1..]
-            .trim()
-            .trim_start_matches("->")
-            .trim();
+        let ret = head[head.rfind(')').unwrap() + 1..].trim().trim_start_matches("->").trim();
         let params = args
             .split(',')
             .map(str::trim)
@@ -84,11 +81,7 @@ fn header_functions() -> BTreeMap<String, Sig> {
         rest = &rest[i + rest[i..].find("*/").unwrap() + 2..];
     }
     text.push_str(rest);
-    let text: String = text
-        .lines()
-        .filter(|l| !l.trim_start().starts_with('#'))
-        .collect::<Vec<_>>()
-        .join("\n");
+    let text: String = text.lines().filter(|l| !l.trim_start().starts_with('#')).collect::<Vec<_>>().join("\n");
     let mut m = BTreeMap::new();
     for stmt in text.split(';') {
         let s = stmt.trim();
@@ -98,11 +91,7 @@ fn header_functions() -> BTreeMap<String, Sig> {
         let open = s.find('(').unwrap();
         let (name, ret) = split_decl(&s[..open]);
         let args = &s[open + 1..s.rfind(')').unwrap()];
-        let params = if args.trim() == "void" {
-            vec![]
-        } else {
-            args.split(',').map(split_decl).collect()
-        };
+        let params = if args.trim() == "void" { vec![] } else { args.split(',').map(split_decl).collect() };
         m.insert(name, (ret, params));
     }
     m
@@ -141,11 +130,7 @@ fn rust_structs() -> BTreeMap<String, Vec<(String, String)>> {
             .map(str::trim)
             .filter(|l| l.starts_with("pub "))
             .map(|l| {
-                let (n, t) = l
-                    .trim_start_matches("pub ")
-                    .trim_end_matches(',')
-                    .split_once(':')
-                    .unwrap();
+                let (n, t) = l.trim_start_matches("pub ").trim_end_matches(',').split_once(':').unwrap();
                 (n.trim().to_string(), norm(&c_type(t)))
             })
             .collect();
@@ -182,11 +167,7 @@ fn every_struct_matches() {
 }
 
 fn parse_int(s: &str) -> i64 {
-    let s = s
-        .trim()
-        .trim_start_matches('(')
-        .trim_end_matches(')')
-        .replace('_', "");
+    let s = s.trim().trim_start_matches('(').trim_end_matches(')').replace('_', "");
     s.parse().unwrap_or_else(|_| panic!("not an integer: {s}"))
 }
 
@@ -199,10 +180,7 @@ fn every_constant_matches() {
         r.insert(name, parse_int(v));
     }
     let mut h = BTreeMap::new();
-    for l in HEADER
-        .lines()
-        .filter(|l| l.starts_with("#define TMC429_") && !l.starts_with("#define TMC429_H"))
-    {
+    for l in HEADER.lines().filter(|l| l.starts_with("#define TMC429_") && !l.starts_with("#define TMC429_H")) {
         let l = l.split("/*").next().unwrap();
         let mut it = l.split_whitespace().skip(1);
         let name = it.next().unwrap().to_string();

@@ -324,11 +324,7 @@ impl Chain {
     /// Starts a datagram (C80): snapshot of the index, current scale, direction and step flag of
     /// every motor and of the polarities; cover and dgw taken.
     fn start(&mut self, g: &mut Global, motors: &[Motor; 3], cur: &[CurrentScale; 3]) {
-        self.snap_pol = Polarity {
-            ph_ab: g.g(f::POL_PH_AB) != 0,
-            fd_ab: g.g(f::POL_FD_AB) != 0,
-            dac_ab: g.g(f::POL_DAC_AB) != 0,
-        };
+        self.snap_pol = Polarity { ph_ab: g.g(f::POL_PH_AB) != 0, fd_ab: g.g(f::POL_FD_AB) != 0, dac_ab: g.g(f::POL_DAC_AB) != 0 };
         let mut dir = 0;
         let mut step = 0;
         for m in 0..3 {

@@ -249,12 +249,7 @@ impl Tmc429 {
 
     /// The probe bundle of the current state.
     pub fn probes(&self) -> Probes {
-        let mut p = Probes {
-            prescaler: self.prescaler,
-            power_down: self.power_down as u8,
-            status: self.status(),
-            ..Probes::default()
-        };
+        let mut p = Probes { prescaler: self.prescaler, power_down: self.power_down as u8, status: self.status(), ..Probes::default() };
         for (mp, m) in p.motor.iter_mut().zip(self.motors.iter()) {
             *mp = MotorProbe {
                 x_target: m.x_target,
@@ -547,7 +542,11 @@ impl Tmc429 {
             let stop_at_target = m.rm <= SOFT_MODE && at_target && (m.v.unsigned_abs() >> 8) <= m.v_min as u32;
 
             // Interrupt conditions (C63).
-            let cond = ((at_target as u8) * INT_POS_END) | (((sel && !tol_ok) as u8) * INT_REF_WRONG) | (((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS) | ((stop as u8) * INT_STOP) | ((!l as u8) * INT_STOP_LEFT_LOW)
+            let cond = ((at_target as u8) * INT_POS_END)
+                | (((sel && !tol_ok) as u8) * INT_REF_WRONG)
+                | (((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS)
+                | ((stop as u8) * INT_STOP)
+                | ((!l as u8) * INT_STOP_LEFT_LOW)
                 | (!r as u8) * INT_STOP_RIGHT_LOW
                 | (l as u8) * INT_STOP_LEFT_HIGH
                 | (r as u8) * INT_STOP_RIGHT_HIGH;

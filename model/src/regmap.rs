@@ -128,10 +128,7 @@ impl Register {
     }
     /// Bits a write stores (not R, not W1C).
     pub fn writable_mask(&self) -> u32 {
-        self.fields
-            .iter()
-            .filter(|f| matches!(f.access, Access::Rw))
-            .fold(0, |m, f| m | f.mask())
+        self.fields.iter().filter(|f| matches!(f.access, Access::Rw)).fold(0, |m, f| m | f.mask())
     }
 }
 
@@ -173,7 +170,8 @@ pub mod f {
     pub const USTEP_COUNT: Field = fld("ustep_count", 0, 8, false, Rw, "full-wave microstep index");
     // Global (TMC428 §9, TMC429 §8.2).
     pub const DATAGRAM_LOW: Field = fld("datagram_low_word", 0, 24, false, R, "bits 23..0 of the driver-chain readback; a write arms CDGW");
-    pub const DATAGRAM_HIGH: Field = fld("datagram_high_word", 0, 24, false, R, "bits 47..24 of the driver-chain readback; a write arms CDGW");
+    pub const DATAGRAM_HIGH: Field =
+        fld("datagram_high_word", 0, 24, false, R, "bits 47..24 of the driver-chain readback; a write arms CDGW");
     pub const COVER_WAITING: Field = fld("cw", 23, 1, false, R, "cover datagram waiting");
     pub const COVER_POS: Field = fld("cover_pos", 8, 6, false, Rw, "first bit position of the cover datagram (reads back +1)");
     pub const COVER_LEN: Field = fld("cover_len", 0, 5, false, Rw, "cover datagram length (0..24)");
@@ -266,6 +264,7 @@ const fn reg(
 }
 
 /// The register map of the family.
+#[rustfmt::skip] // one register per line: the table reads like the datasheets' maps
 pub static REGISTERS: &[Register] = &[
     reg("x_target", Motor, idx::X_TARGET, ChipSet::ALL, &[X_TARGET], 0, "", "TMC428 §8.1"),
     reg("x_actual", Motor, idx::X_ACTUAL, ChipSet::ALL, &[X_ACTUAL], 0, "in RAMP and SOFT mode the motor then drives to x_target", "TMC428 §8.2"),
@@ -343,17 +342,12 @@ pub fn lookup(chip: Chip, a7: u8) -> Option<(&'static Register, Option<u8>)> {
         Addr::Global(j) => (Global, j, None),
         Addr::Ram(a) => (Ram, a >> 5, None),
     };
-    REGISTERS
-        .iter()
-        .find(|r| r.space == space && r.index == index && r.chips.contains(chip))
-        .map(|r| (r, motor))
+    REGISTERS.iter().find(|r| r.space == space && r.index == index && r.chips.contains(chip)).map(|r| (r, motor))
 }
 
 /// Find a register by name on a chip (case-insensitive). Motor registers are found for motor 0.
 pub fn by_name(chip: Chip, name: &str) -> Option<&'static Register> {
-    REGISTERS
-        .iter()
-        .find(|r| r.name.eq_ignore_ascii_case(name) && r.chips.contains(chip))
+    REGISTERS.iter().find(|r| r.name.eq_ignore_ascii_case(name) && r.chips.contains(chip))
 }
 
 /// Address of a motor register (motor 0..2, IDX 0..15).

@@ -35,14 +35,7 @@ pub fn markdown() -> String {
         s += "\n\n| Field | Bits | Signed | Access | Meaning |\n|---|---|---|---|---|\n";
         for f in r.fields {
             let bits = if f.width == 1 { format!("{}", f.lsb) } else { format!("{}..{}", f.lsb + f.width - 1, f.lsb) };
-            s += &format!(
-                "| {} | {} | {} | {} | {} |\n",
-                f.name,
-                bits,
-                if f.signed { "yes" } else { "no" },
-                f.access.as_str(),
-                f.doc
-            );
+            s += &format!("| {} | {} | {} | {} | {} |\n", f.name, bits, if f.signed { "yes" } else { "no" }, f.access.as_str(), f.doc);
         }
         s += "\n";
     }

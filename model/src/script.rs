@@ -89,11 +89,7 @@ impl fmt::Display for ParseError {
 }
 
 fn parse_hex(tok: &str) -> Option<(u64, usize)> {
-    let digits = tok
-        .strip_prefix("0x")
-        .or_else(|| tok.strip_prefix("0X"))
-        .or_else(|| tok.strip_prefix('$'))
-        .unwrap_or(tok);
+    let digits = tok.strip_prefix("0x").or_else(|| tok.strip_prefix("0X")).or_else(|| tok.strip_prefix('$')).unwrap_or(tok);
     if digits.is_empty() || digits.len() > 16 || !digits.chars().all(|c| c.is_ascii_hexdigit()) {
         return None;
     }
@@ -126,10 +122,7 @@ fn parse_line(text: &str) -> Result<Option<Command>, String> {
             if toks.len() != 2 {
                 return Err("expected 'wait CYCLES'".into());
             }
-            let c: u64 = toks[1]
-                .replace('_', "")
-                .parse()
-                .map_err(|_| format!("expected a decimal cycle count, found '{}'", toks[1]))?;
+            let c: u64 = toks[1].replace('_', "").parse().map_err(|_| format!("expected a decimal cycle count, found '{}'", toks[1]))?;
             Ok(Some(Command::Wait(c)))
         }
         "pin" => {
@@ -138,12 +131,9 @@ fn parse_line(text: &str) -> Result<Option<Command>, String> {
             }
             let mut set = Vec::new();
             for t in &toks[1..] {
-                let (name, val) = t
-                    .split_once('=')
-                    .ok_or_else(|| format!("expected NAME=0 or NAME=1, found '{t}'"))?;
-                let pin = Pin::parse(name).ok_or_else(|| {
-                    format!("unknown pin '{name}': expected REF1, REF2, REF3, REFR1, REFR2, REFR3 or SDI_S")
-                })?;
+                let (name, val) = t.split_once('=').ok_or_else(|| format!("expected NAME=0 or NAME=1, found '{t}'"))?;
+                let pin = Pin::parse(name)
+                    .ok_or_else(|| format!("unknown pin '{name}': expected REF1, REF2, REF3, REFR1, REFR2, REFR3 or SDI_S"))?;
                 let level = match val {
                     "0" => false,
                     "1" => true,
@@ -160,10 +150,7 @@ fn parse_line(text: &str) -> Result<Option<Command>, String> {
             match parse_hex(toks[0]) {
                 Some((v, 8)) => Ok(Some(Command::Datagram(v as u32))),
                 Some(_) => Err(format!("a datagram has exactly 8 hex digits, found '{}'", toks[0])),
-                None => Err(format!(
-                    "expected a datagram (8 hex digits), 'bits', 'wait' or 'pin', found '{}'",
-                    toks[0]
-                )),
+                None => Err(format!("expected a datagram (8 hex digits), 'bits', 'wait' or 'pin', found '{}'", toks[0])),
             }
         }
     }
@@ -262,13 +249,7 @@ pub fn run(host: &mut Host, script: &[Line], opts: RunOptions, out: &mut dyn Wri
     flush_events(&queue, None, out)
 }
 
-fn run_lines(
-    host: &mut Host,
-    script: &[Line],
-    opts: RunOptions,
-    queue: &Arc<Mutex<Vec<Event>>>,
-    out: &mut dyn Write,
-) -> io::Result<()> {
+fn run_lines(host: &mut Host, script: &[Line], opts: RunOptions, queue: &Arc<Mutex<Vec<Event>>>, out: &mut dyn Write) -> io::Result<()> {
     for l in script {
         match &l.command {
             Command::Datagram(d) => {

@@ -321,9 +321,8 @@ fn individual_chip_selects() {
     request(&mut h);
     h.wait(1000);
     let t = trace.lock().unwrap();
-    let rising_while = |sel: &dyn Fn(&tmc429_model::Outputs) -> bool| {
-        t.windows(2).filter(|w| !w[0].1.sck_s && w[1].1.sck_s && sel(&w[0].1)).count()
-    };
+    let rising_while =
+        |sel: &dyn Fn(&tmc429_model::Outputs) -> bool| t.windows(2).filter(|w| !w[0].1.sck_s && w[1].1.sck_s && sel(&w[0].1)).count();
     assert_eq!(rising_while(&|o| !o.nscs_s && o.nscs2 && o.nscs3), 12);
     assert_eq!(rising_while(&|o| o.nscs_s && !o.nscs2 && o.nscs3), 12);
     assert_eq!(rising_while(&|o| o.nscs_s && o.nscs2 && !o.nscs3), 12);

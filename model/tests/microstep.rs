@@ -143,7 +143,7 @@ fn is_v0_after_255_ramp_ticks() {
         let (mut h, log) = host_with_events(Chip::Tmc429);
         h.write(GCONF, gconf(0, 7, 0));
         h.write(motor_a7(0, 8), 1 << 12); // is_v0 = %001 (1/8), the others %000 (1)
-        // Calibrate the delay from a write to the datagram start.
+                                          // Calibrate the delay from a write to the datagram start.
         let c0 = h.cycle();
         request(&mut h);
         settle(&mut h, 2000);

@@ -40,7 +40,18 @@ fn moves() -> impl Strategy<Value = Move> {
             let fast = ((v_max as u64 * 256 * (32u64 << rd)).div_ceil(BUDGET / 2)) as u32;
             let lo = lo.max(fast).min(hi);
             let reach = (BUDGET as u64 / 2 * v_max as u64 >> (16 + pd)).max(2) as i32;
-            (Just(motor), Just(pd), Just(rd), 1u32..=4, Just(v_max), lo..=hi, Just(if five { 0.05f32 } else { 0.01 }), -100_000i32..100_000, 1..=reach, prop::bool::ANY)
+            (
+                Just(motor),
+                Just(pd),
+                Just(rd),
+                1u32..=4,
+                Just(v_max),
+                lo..=hi,
+                Just(if five { 0.05f32 } else { 0.01 }),
+                -100_000i32..100_000,
+                1..=reach,
+                prop::bool::ANY,
+            )
         })
         .prop_map(|(motor, pd, rd, v_min, v_max, a_max, reduction, start, dist, neg)| Move {
             motor,

@@ -13,7 +13,15 @@ fn reset_values() {
     for chip in Chip::ALL {
         let mut h = host(chip);
         for r in REGISTERS.iter().filter(|r| r.chips.contains(chip) && r.space != Space::Ram) {
-            let motors: &[u8] = if r.space == Space::Motor { if chip == Chip::Tmc4210 { &[0] } else { &[0, 1, 2] } } else { &[0] };
+            let motors: &[u8] = if r.space == Space::Motor {
+                if chip == Chip::Tmc4210 {
+                    &[0]
+                } else {
+                    &[0, 1, 2]
+                }
+            } else {
+                &[0]
+            };
             for &m in motors {
                 assert_eq!(h.read(r.a7(m)), r.reset, "{chip} {}[{m}]", r.name);
             }
@@ -24,7 +32,8 @@ fn reset_values() {
 /// Writable fields store exactly their bits; other bits read 0 (C21).
 #[test]
 fn writable_bits_round_trip() {
-    let plain = ["x_target", "x_actual", "v_min", "v_max", "v_target", "a_max", "current_scaling", "clk_config", "dx_ref_tolerance", "ustep_count"];
+    let plain =
+        ["x_target", "x_actual", "v_min", "v_max", "v_target", "a_max", "current_scaling", "clk_config", "dx_ref_tolerance", "ustep_count"];
     for chip in [Chip::Tmc428, Chip::Tmc429] {
         let mut h = host(chip);
         // HOLD_MODE, so that no ramp tick rewrites v_target (C24).

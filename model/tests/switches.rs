@@ -244,7 +244,7 @@ fn target_snapshot_acts_from_the_commit() {
     c.write_register(0x03, 2047); // v_max
     c.write_register(0x04, (-50i32) as u32 & 0xFFF); // v_target
     c.write_register(0x0A, 2); // VELOCITY_MODE, a_max stays 0: V stays 0
-    // settle the switch (C4), then run to the cycle before motor 1's snapshot
+                               // settle the switch (C4), then run to the cycle before motor 1's snapshot
     for _ in 0..4 {
         c.tick(&inp);
     }

@@ -64,13 +64,7 @@ where
     register_font();
     let e = |x: DrawingAreaErrorKind<DB::ErrorType>| x.to_string();
     root.fill(&WHITE).map_err(e)?;
-    let title = format!(
-        "{}: {} at {} MHz, engine {}",
-        report.name,
-        report.chip,
-        report.fclk as f64 / 1e6,
-        report.engine.name()
-    );
+    let title = format!("{}: {} at {} MHz, engine {}", report.name, report.chip, report.fclk as f64 / 1e6, report.engine.name());
     let root = root.titled(&title, (FONT, 22)).map_err(e)?;
     let panels = root.split_evenly((3, 1));
     let n = report.motors.len();

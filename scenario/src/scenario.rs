@@ -296,9 +296,8 @@ pub fn parse_time(s: &str, fclk: u64) -> Result<u64, String> {
     let split = t.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_' || c == 'e' || c == '-' || c == '+')).unwrap_or(t.len());
     let (num, unit) = t.split_at(split);
     let num: String = num.chars().filter(|&c| c != '_').collect();
-    let x: f64 = num
-        .parse()
-        .map_err(|_| format!("expected a time such as \"10 ms\", \"2.5 s\", \"500 us\" or \"1000 cycles\", found \"{s}\""))?;
+    let x: f64 =
+        num.parse().map_err(|_| format!("expected a time such as \"10 ms\", \"2.5 s\", \"500 us\" or \"1000 cycles\", found \"{s}\""))?;
     if !(x >= 0.0 && x.is_finite()) {
         return Err(format!("expected a time ≥ 0, found \"{s}\""));
     }
@@ -308,9 +307,7 @@ pub fn parse_time(s: &str, fclk: u64) -> Result<u64, String> {
         "ms" => 1e-3,
         "us" | "µs" => 1e-6,
         "ns" => 1e-9,
-        u => {
-            return Err(format!("unknown time unit \"{u}\" in \"{s}\": expected s, ms, us, ns or cycles"))
-        }
+        u => return Err(format!("unknown time unit \"{u}\" in \"{s}\": expected s, ms, us, ns or cycles")),
     };
     Ok((x * scale * fclk as f64).round() as u64)
 }
@@ -400,7 +397,10 @@ impl Ctx<'_> {
         let x = self.int(v, &what)?;
         let (lo, hi) = field_range(f);
         if !(lo..=hi).contains(&x) {
-            self.err(v.span().start, format!("{what} = {x} out of range: expected {lo}..{hi} ({} bits{})", f.width, if f.signed { ", signed" } else { "" }));
+            self.err(
+                v.span().start,
+                format!("{what} = {x} out of range: expected {lo}..{hi} ({} bits{})", f.width, if f.signed { ", signed" } else { "" }),
+            );
             return None;
         }
         Some((x as u32) & (((1u64 << f.width) - 1) as u32))
@@ -436,7 +436,10 @@ impl Ctx<'_> {
                                     }
                                     None => {
                                         let names: Vec<&str> = reg.fields.iter().map(|f| f.name).collect();
-                                        self.err(fk.span().start, format!("{} has no field '{}': expected one of {}", reg.name, fk.get_ref(), names.join(", ")));
+                                        self.err(
+                                            fk.span().start,
+                                            format!("{} has no field '{}': expected one of {}", reg.name, fk.get_ref(), names.join(", ")),
+                                        );
                                     }
                                 }
                             }
@@ -444,7 +447,14 @@ impl Ctx<'_> {
                         }
                         DeValue::String(s) if reg.name == "pmul_pdiv" && s.as_ref() == "auto" => WriteData::AutoPmul(0.01),
                         DeValue::String(s) => {
-                            self.err(v.span().start, format!("{}: expected an integer or a table of fields{}, found \"{s}\"", reg.name, if reg.name == "pmul_pdiv" { " or \"auto\"" } else { "" }));
+                            self.err(
+                                v.span().start,
+                                format!(
+                                    "{}: expected an integer or a table of fields{}, found \"{s}\"",
+                                    reg.name,
+                                    if reg.name == "pmul_pdiv" { " or \"auto\"" } else { "" }
+                                ),
+                            );
                             continue;
                         }
                         _ => {
@@ -452,7 +462,8 @@ impl Ctx<'_> {
                             let (lo, hi) = if reg.fields.len() == 1 { field_range(&reg.fields[0]) } else { (0, 0xFF_FFFF) };
                             // a single-field register takes the field's range; x_latched and
                             // friends take any 24-bit word
-                            let (lo, hi) = if reg.fields.len() == 1 && reg.fields[0].access == Access::R { (-(1 << 23), 0xFF_FFFF) } else { (lo, hi) };
+                            let (lo, hi) =
+                                if reg.fields.len() == 1 && reg.fields[0].access == Access::R { (-(1 << 23), 0xFF_FFFF) } else { (lo, hi) };
                             if !(lo..=hi).contains(&x) {
                                 self.err(v.span().start, format!("{} = {x} out of range: expected {lo}..{hi}", reg.name));
                                 continue;
@@ -503,7 +514,10 @@ impl Ctx<'_> {
         let motor = self.motor_key(t).ok()?;
         let keys: Vec<_> = t.iter().filter(|(k, _)| k.get_ref() != "motor").collect();
         if keys.len() != 1 {
-            self.err(v.span().start, format!("{what}: expected exactly one of x_actual, v_actual, at_target, stopped (with `motor`) or int"));
+            self.err(
+                v.span().start,
+                format!("{what}: expected exactly one of x_actual, v_actual, at_target, stopped (with `motor`) or int"),
+            );
             return None;
         }
         let (k, val) = keys[0];
@@ -543,7 +557,10 @@ impl Ctx<'_> {
             }
             "int" => Some(Condition::Int(self.boolean(val, name)?)),
             _ => {
-                self.err(k.span().start, format!("{what}: unknown condition '{name}': expected x_actual, v_actual, at_target, stopped or int"));
+                self.err(
+                    k.span().start,
+                    format!("{what}: unknown condition '{name}': expected x_actual, v_actual, at_target, stopped or int"),
+                );
                 None
             }
         }
@@ -576,7 +593,10 @@ impl Ctx<'_> {
                     .filter(|s| if motor.is_some() { s.scope == "motor0" } else { s.scope == "top" || s.scope == "chain" })
                     .map(|s| s.name.to_string())
                     .collect();
-                self.err(k.span().start, format!("unknown {}probe '{name}': expected one of {}", if motor.is_some() { "motor " } else { "" }, list.join(", ")));
+                self.err(
+                    k.span().start,
+                    format!("unknown {}probe '{name}': expected one of {}", if motor.is_some() { "motor " } else { "" }, list.join(", ")),
+                );
                 continue;
             };
             if let Some(x) = self.int(val, name) {
@@ -665,7 +685,9 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
                 None => c.err(v.span().start, format!("unknown driver '{s}': expected one of {}", DRIVERS.join(", "))),
             }
             match (driver, c.chip) {
-                ("table-11-2", Chip::Tmc4210) => c.err(v.span().start, "driver 'table-11-2': the TMC4210 has no driver chain (use 'step-dir')"),
+                ("table-11-2", Chip::Tmc4210) => {
+                    c.err(v.span().start, "driver 'table-11-2': the TMC4210 has no driver chain (use 'step-dir')")
+                }
                 ("step-dir", Chip::Tmc428) => c.err(v.span().start, "driver 'step-dir': the TMC428 has no Step/Dir interface"),
                 _ => {}
             }
@@ -728,7 +750,14 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
             }
             if let (Some(Trigger::Cycle(x)), true) = (&trigger, duration > 0) {
                 if *x >= duration {
-                    c.err(at, format!("event at {} is not before the end of the scenario (duration {})", fmt_time(*x as f64 / c.fclk as f64), fmt_time(duration as f64 / c.fclk as f64)));
+                    c.err(
+                        at,
+                        format!(
+                            "event at {} is not before the end of the scenario (duration {})",
+                            fmt_time(*x as f64 / c.fclk as f64),
+                            fmt_time(duration as f64 / c.fclk as f64)
+                        ),
+                    );
                 }
             }
             if let Some(trigger) = trigger {
@@ -771,7 +800,10 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
                 };
                 let Some(when) = c.time(atv, "at") else { continue };
                 if duration > 0 && when > duration {
-                    c.err(atv.span().start, format!("at {} is after the end of the scenario (duration {})", tname(&c, when), tname(&c, duration)));
+                    c.err(
+                        atv.span().start,
+                        format!("at {} is after the end of the scenario (duration {})", tname(&c, when), tname(&c, duration)),
+                    );
                 }
                 if let Some(p) = t.get("probe") {
                     let values = c.probe_values(p);
@@ -812,7 +844,14 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
                             // the read frame must end before the scenario does
                             let frame = 64 * sck_half as u64 + 16;
                             if duration > 0 && when + frame > duration {
-                                c.err(atv.span().start, format!("register read at {} ends after the scenario (duration {}): a read takes {frame} CLK", tname(&c, when), tname(&c, duration)));
+                                c.err(
+                                    atv.span().start,
+                                    format!(
+                                        "register read at {} ends after the scenario (duration {}): a read takes {frame} CLK",
+                                        tname(&c, when),
+                                        tname(&c, duration)
+                                    ),
+                                );
                                 continue;
                             }
                             let a7 = reg.a7(motor.unwrap_or(0));
@@ -822,7 +861,10 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
                                 (None, Some(f)) => format!("{} = {x}", f.name),
                                 (None, None) => format!("{} = {x}", reg.name),
                             };
-                            checks.push((Check::Register { at: when, a7, reg, field, expected: x }, format!("{who} (read) at {}", tname(&c, when))));
+                            checks.push((
+                                Check::Register { at: when, a7, reg, field, expected: x },
+                                format!("{who} (read) at {}", tname(&c, when)),
+                            ));
                         }
                     }
                 }
@@ -845,19 +887,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
         c.errors.sort_by_key(|e| e.line);
         return Err(c.errors);
     }
-    Ok(Scenario {
-        file: file.to_string(),
-        name,
-        chip: c.chip,
-        fclk: c.fclk,
-        duration,
-        sck_half,
-        driver,
-        lut,
-        setup,
-        events,
-        expects,
-    })
+    Ok(Scenario { file: file.to_string(), name, chip: c.chip, fclk: c.fclk, duration, sck_half, driver, lut, setup, events, expects })
 }
 
 /// A condition in words.

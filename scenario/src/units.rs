@@ -124,11 +124,7 @@ impl Profile {
             ));
         }
         if self.a_max as u64 > self.upper_limit() {
-            w.push(format!(
-                "a_max {} is above A_MAX_UPPER_LIMIT {} (TMC429 §8.1.7.1.1)",
-                self.a_max,
-                self.upper_limit()
-            ));
+            w.push(format!("a_max {} is above A_MAX_UPPER_LIMIT {} (TMC429 §8.1.7.1.1)", self.a_max, self.upper_limit()));
         }
         if !self.pmul.valid() {
             w.push(format!(
@@ -185,13 +181,7 @@ fn check_microsteps(m: u32) -> Result<(), String> {
 /// acceleration resolution) for which a_max = round(ΔR · 2^(pulse_div + ramp_div + 29) / fCLK²)
 /// fits 11 bits and lies within the a_max limits; then p_mul/p_div by the datasheet's
 /// `pmulpdiv.c` with `p_reduction`.
-pub fn solve(
-    fclk: f64,
-    microsteps: u32,
-    fullstep_hz: f64,
-    fullstep_accel: f64,
-    p_reduction: f32,
-) -> Result<Profile, String> {
+pub fn solve(fclk: f64, microsteps: u32, fullstep_hz: f64, fullstep_accel: f64, p_reduction: f32) -> Result<Profile, String> {
     check_microsteps(microsteps)?;
     if !(fullstep_hz > 0.0 && fullstep_hz.is_finite()) {
         return Err(format!("speed {fullstep_hz} Hz: expected a positive number"));
@@ -240,9 +230,7 @@ pub fn solve(
         return from_registers(fclk, microsteps, pulse_div, rd, v_max, a, p_reduction);
     }
     if last_err.is_empty() {
-        last_err = format!(
-            "no ramp_div 0..13 gives a_max in 1..2047 for {dr:.2} Hz/s (microsteps) with pulse_div {pulse_div}"
-        );
+        last_err = format!("no ramp_div 0..13 gives a_max in 1..2047 for {dr:.2} Hz/s (microsteps) with pulse_div {pulse_div}");
     }
     Err(last_err)
 }

@@ -27,11 +27,7 @@ pub const SKIPPED: [&str; 1] = ["prescaler"];
 pub fn variable_names(cosim: bool) -> Vec<String> {
     let mut v: Vec<String> = INPUT_NAMES.iter().map(|n| format!("top.{n}")).collect();
     let sig = |prefix: &str| {
-        SIGNALS
-            .iter()
-            .filter(|s| !SKIPPED.contains(&s.name))
-            .map(|s| format!("{prefix}{}.{}", s.scope, s.name))
-            .collect::<Vec<_>>()
+        SIGNALS.iter().filter(|s| !SKIPPED.contains(&s.name)).map(|s| format!("{prefix}{}.{}", s.scope, s.name)).collect::<Vec<_>>()
     };
     v.extend(sig(""));
     v.push("spi.transaction".into());

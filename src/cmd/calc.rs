@@ -57,31 +57,31 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
     }
     let forward = a.speed.is_some() || a.rpm.is_some() || a.accel.is_some();
     let reverse = a.pulse_div.is_some() || a.ramp_div.is_some() || a.v_max.is_some() || a.a_max.is_some();
-    let profile = match (forward, reverse) {
-        (true, false) => {
-            let hz = match (a.speed, a.rpm) {
-                (Some(s), None) => s,
-                (None, Some(r)) => r / 60.0 * a.steps_per_rev.unwrap_or(200) as f64,
-                _ => return Err(UserError("give --speed HZ or --rpm RPM --steps-per-rev N".into())),
-            };
-            let Some(acc) = a.accel else {
-                return Err(UserError("give the acceleration: --accel HZ_PER_S (full steps)".into()));
-            };
-            units::solve(fclk, microsteps, hz, acc, a.p_reduction).map_err(UserError)?
-        }
-        (false, true) => {
-            let (Some(pd), Some(rd), Some(v), Some(am)) = (a.pulse_div, a.ramp_div, a.v_max, a.a_max) else {
-                return Err(UserError("from registers: give --pulse-div, --ramp-div, --v-max and --a-max".into()));
-            };
-            units::from_registers(fclk, microsteps, pd, rd, v, am, a.p_reduction).map_err(UserError)?
-        }
-        (true, true) => return Err(UserError("give either a speed and an acceleration, or registers, not both".into())),
-        (false, false) => {
-            return Err(UserError(
-                "give --speed HZ (or --rpm RPM --steps-per-rev N) and --accel HZ_PER_S, or --pulse-div, --ramp-div, --v-max and --a-max".into(),
-            ))
-        }
-    };
+    let profile =
+        match (forward, reverse) {
+            (true, false) => {
+                let hz = match (a.speed, a.rpm) {
+                    (Some(s), None) => s,
+                    (None, Some(r)) => r / 60.0 * a.steps_per_rev.unwrap_or(200) as f64,
+                    _ => return Err(UserError("give --speed HZ or --rpm RPM --steps-per-rev N".into())),
+                };
+                let Some(acc) = a.accel else {
+                    return Err(UserError("give the acceleration: --accel HZ_PER_S (full steps)".into()));
+                };
+                units::solve(fclk, microsteps, hz, acc, a.p_reduction).map_err(UserError)?
+            }
+            (false, true) => {
+                let (Some(pd), Some(rd), Some(v), Some(am)) = (a.pulse_div, a.ramp_div, a.v_max, a.a_max) else {
+                    return Err(UserError("from registers: give --pulse-div, --ramp-div, --v-max and --a-max".into()));
+                };
+                units::from_registers(fclk, microsteps, pd, rd, v, am, a.p_reduction).map_err(UserError)?
+            }
+            (true, true) => return Err(UserError("give either a speed and an acceleration, or registers, not both".into())),
+            (false, false) => return Err(UserError(
+                "give --speed HZ (or --rpm RPM --steps-per-rev N) and --accel HZ_PER_S, or --pulse-div, --ramp-div, --v-max and --a-max"
+                    .into(),
+            )),
+        };
     print!("{}", render(&profile, a.steps_per_rev));
     Ok(Outcome::Ok)
 }

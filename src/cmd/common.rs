@@ -47,15 +47,12 @@ pub fn read_input(path: Option<&std::path::Path>) -> Result<(String, String), cr
     use std::io::Read;
     match path {
         Some(p) if p.as_os_str() != "-" => {
-            let text = std::fs::read_to_string(p)
-                .map_err(|e| crate::UserError(format!("{}: cannot read: {e}", p.display())))?;
+            let text = std::fs::read_to_string(p).map_err(|e| crate::UserError(format!("{}: cannot read: {e}", p.display())))?;
             Ok((p.display().to_string(), text))
         }
         _ => {
             let mut s = String::new();
-            std::io::stdin()
-                .read_to_string(&mut s)
-                .map_err(|e| crate::UserError(format!("<stdin>: cannot read: {e}")))?;
+            std::io::stdin().read_to_string(&mut s).map_err(|e| crate::UserError(format!("<stdin>: cannot read: {e}")))?;
             Ok(("<stdin>".to_string(), s))
         }
     }

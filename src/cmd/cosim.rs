@@ -2,8 +2,8 @@
 
 use std::path::PathBuf;
 
-use tmc429_testbench::{run as cosim_run, Config, Variant};
 use tmc429_testbench::stimulus::Profile;
+use tmc429_testbench::{run as cosim_run, Config, Variant};
 
 use super::common::ChipArgs;
 use crate::{Outcome, UserError};
@@ -41,17 +41,14 @@ pub struct Args {
 }
 
 pub fn run(a: Args) -> Result<Outcome, UserError> {
-    tmc429_testbench::rtl::require("or run a scenario on the golden model alone: tmc429 run FILE --engine model")
-        .map_err(UserError)?;
+    tmc429_testbench::rtl::require("or run a scenario on the golden model alone: tmc429 run FILE --engine model").map_err(UserError)?;
     let chip = a.chip.chip;
     let mut cfg = Config::new(chip, a.seed, a.cycles);
     cfg.fclk = a.chip.fclk();
     cfg.profile = Profile::parse(&a.profile).expect("clap restricts --profile to the known names");
     if a.plant_bug.is_some() {
         if chip != tmc429_model::Chip::Tmc429 {
-            return Err(UserError(format!(
-                "--plant-bug: the planted-bug RTL exists for --chip tmc429 only, not {chip}"
-            )));
+            return Err(UserError(format!("--plant-bug: the planted-bug RTL exists for --chip tmc429 only, not {chip}")));
         }
         cfg.variant = Variant::PlantedStatusBug;
     }

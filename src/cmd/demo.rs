@@ -30,8 +30,7 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
         return Ok(Outcome::Ok);
     }
     if a.engine != Engine::Model {
-        tmc429_testbench::rtl::require("or run the demo on the golden model alone: tmc429 demo --engine model")
-            .map_err(UserError)?;
+        tmc429_testbench::rtl::require("or run the demo on the golden model alone: tmc429 demo --engine model").map_err(UserError)?;
     }
     let sc = tmc429_scenario::parse(DEMO_TOML, DEMO_FILE)
         .map_err(|errs| UserError(errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n")))?;

@@ -1,8 +1,8 @@
 //! One module per subcommand.
 pub mod calc;
 pub mod common;
-pub mod demo;
 pub mod cosim;
+pub mod demo;
 pub mod regmap;
 pub mod run;
 pub mod spi;

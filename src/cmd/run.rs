@@ -82,7 +82,13 @@ pub fn execute(
         let vcd_name = v.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let end_ps = report.cycles * tmc429_testbench::rtl::period_ps(sc.fclk);
         let motors = report.motors.len();
-        let text = gtkw::save_file(&vcd_name, &format!("tmc429 {label} {}: {} on {}", sc.name, sc.chip, engine.name()), motors, engine == Engine::Cosim, end_ps);
+        let text = gtkw::save_file(
+            &vcd_name,
+            &format!("tmc429 {label} {}: {} on {}", sc.name, sc.chip, engine.name()),
+            motors,
+            engine == Engine::Cosim,
+            end_ps,
+        );
         write_atomic(&save, text.as_bytes())?;
     }
     if let Some(p) = plot_file {
@@ -112,10 +118,8 @@ pub fn conclude(r: &Report) -> Outcome {
 
 pub fn write_atomic(p: &Path, bytes: &[u8]) -> Result<(), UserError> {
     let tmp = tmc429_scenario::run::tmp_path(p);
-    std::fs::write(&tmp, bytes)
-        .and_then(|_| std::fs::rename(&tmp, p))
-        .map_err(|e| {
-            let _ = std::fs::remove_file(&tmp);
-            UserError(format!("{}: cannot write: {e}", p.display()))
-        })
+    std::fs::write(&tmp, bytes).and_then(|_| std::fs::rename(&tmp, p)).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        UserError(format!("{}: cannot write: {e}", p.display()))
+    })
 }

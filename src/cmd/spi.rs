@@ -32,8 +32,7 @@ pub struct Args {
 
 pub fn run(a: Args) -> Result<Outcome, UserError> {
     let (name, text) = read_input(a.script.as_deref())?;
-    let lines = script::parse(&text, &name)
-        .map_err(|errs| UserError(errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n")))?;
+    let lines = script::parse(&text, &name).map_err(|errs| UserError(errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n")))?;
     let mut host = Host::new(a.chip.chip);
     host.set_sck_half(a.sck_half).map_err(|e| UserError(format!("--sck-half: {e}")))?;
     let opts = RunOptions { timestamps: a.timestamps, decode: a.decode, events: a.events };

@@ -125,9 +125,7 @@ fn parse_hz(s: &str) -> Result<u64, String> {
 }
 
 fn kv<'a>(opt: &str, s: &'a str) -> Result<(i64, &'a str), UserError> {
-    let (k, v) = s
-        .split_once('=')
-        .ok_or_else(|| UserError(format!("--{opt} {s}: expected KEY=VALUE")))?;
+    let (k, v) = s.split_once('=').ok_or_else(|| UserError(format!("--{opt} {s}: expected KEY=VALUE")))?;
     let k: i64 = k.trim().parse().map_err(|_| UserError(format!("--{opt} {s}: '{k}' is not a number")))?;
     Ok((k, v.trim()))
 }
@@ -147,8 +145,7 @@ fn axis(opt: &str, s: &str, k: i64) -> Result<usize, UserError> {
 fn build_module(a: &ModuleArgs) -> Result<Module<ModelChip>, UserError> {
     let chip = ModelChip::new(tmc429_model::Chip::Tmc429, a.fclk);
     let mut m = match &a.eeprom {
-        Some(p) => Module::with_eeprom(chip, p.clone())
-            .map_err(|(_, e)| UserError(format!("{}: {e}; nothing was loaded", p.display())))?,
+        Some(p) => Module::with_eeprom(chip, p.clone()).map_err(|(_, e)| UserError(format!("{}: {e}; nothing was loaded", p.display())))?,
         None => Module::new(chip),
     };
     for s in &a.inputs {
@@ -185,9 +182,7 @@ fn build_module(a: &ModuleArgs) -> Result<Module<ModelChip>, UserError> {
     }
     for s in &a.home {
         let (k, v) = kv("home-switch", s)?;
-        let (f, t) = v
-            .split_once(':')
-            .ok_or_else(|| UserError(format!("--home-switch {s}: expected AXIS=FROM:TO")))?;
+        let (f, t) = v.split_once(':').ok_or_else(|| UserError(format!("--home-switch {s}: expected AXIS=FROM:TO")))?;
         let (f, t) = (num("home-switch", s, f)?, num("home-switch", s, t)?);
         m.world.home_window[axis("home-switch", s, k)?] = Some((f as i32, t as i32));
     }
@@ -232,9 +227,7 @@ fn asm_cmd(a: AsmArgs) -> Result<Outcome, UserError> {
         return Ok(Outcome::Ok);
     }
     let names: std::collections::HashMap<usize, &str> = prog.labels.iter().map(|(n, a)| (*a, n.as_str())).collect();
-    let label = |v: i32| {
-        prog.labels.iter().find(|(_, a)| *a as i32 == v).map(|(n, _)| n.clone()).unwrap_or_else(|| v.to_string())
-    };
+    let label = |v: i32| prog.labels.iter().find(|(_, a)| *a as i32 == v).map(|(n, _)| n.clone()).unwrap_or_else(|| v.to_string());
     let mut out = std::io::stdout().lock();
     for (addr, i) in prog.code.iter().enumerate() {
         let b = i.to_bytes7();
@@ -248,11 +241,7 @@ fn asm_cmd(a: AsmArgs) -> Result<Outcome, UserError> {
 fn disasm(a: DisasmArgs) -> Result<Outcome, UserError> {
     let b = std::fs::read(&a.file).map_err(|e| UserError(format!("{}: cannot read: {e}", a.file.display())))?;
     if b.len() % 7 != 0 {
-        return Err(UserError(format!(
-            "{}: {} bytes is not a whole number of 7-byte instructions",
-            a.file.display(),
-            b.len()
-        )));
+        return Err(UserError(format!("{}: {} bytes is not a whole number of 7-byte instructions", a.file.display(), b.len())));
     }
     let code: Vec<_> = b
         .chunks(7)

@@ -76,10 +76,7 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
         None if Path::new(name).is_file() => scenario::from_file(Path::new(name), chip, fclk, sck_half).map_err(UserError)?,
         None => {
             let names: Vec<&str> = scenario::BUILTIN.iter().map(|(n, _)| *n).collect();
-            return Err(UserError(format!(
-                "--scenario {name}: neither a built-in scenario ({}) nor a readable file",
-                names.join(", ")
-            )));
+            return Err(UserError(format!("--scenario {name}: neither a built-in scenario ({}) nor a readable file", names.join(", "))));
         }
     };
     std::fs::create_dir_all(out).map_err(|e| UserError(format!("--out {}: cannot create: {e}", out.display())))?;

@@ -8,9 +8,9 @@ use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughpu
 
 use tmc429_model::{Chip, Inputs, Tmc429};
 use tmc429_testbench::pair::{run_pair, BATCH};
+use tmc429_testbench::rtl::Expected;
 use tmc429_testbench::signals::{agree, Compare};
 use tmc429_testbench::stimulus::{Driver, Profile, Stimulus};
-use tmc429_testbench::rtl::Expected;
 use tmc429_testbench::{run, Config, Rtl, Variant};
 
 const CYCLES: usize = 200_000;

@@ -164,13 +164,7 @@ impl Outcome {
         let _ = writeln!(s, "  {:<22} {:<20} rtl", "signal", "model");
         for d in &m.diffs {
             let name = format!("{}.{}", d.signal.scope, d.signal.name);
-            let _ = writeln!(
-                s,
-                "  {:<22} {:<20} {}",
-                name,
-                format_value(&d.signal, d.model),
-                format_value(&d.signal, d.rtl)
-            );
+            let _ = writeln!(s, "  {:<22} {:<20} {}", name, format_value(&d.signal, d.model), format_value(&d.signal, d.rtl));
         }
         let _ = writeln!(s, "last {} SPI transactions (oldest first):", m.history.len());
         for t in &m.history {
@@ -183,7 +177,11 @@ impl Outcome {
 /// The data pin the µC reads: SDOZ_C while enabled, else nINT_SDO_C.
 #[inline]
 fn data_pin(o: &Outputs) -> u64 {
-    if o.sdoz_c_oe { o.sdoz_c as u64 } else { o.nint_sdo_c as u64 }
+    if o.sdoz_c_oe {
+        o.sdoz_c as u64
+    } else {
+        o.nint_sdo_c as u64
+    }
 }
 
 /// Verilator's trace beside the VCD: name.vcd -> name.rtl.vcd, other names get .rtl.vcd appended.
@@ -255,14 +253,7 @@ impl ModelSide {
             match &t {
                 Txn::Frame(f) => {
                     self.frames += 1;
-                    self.current = Some(TxnRecord {
-                        start: n + 1,
-                        end: 0,
-                        frame: *f,
-                        reply_model: 0,
-                        reply_rtl: 0,
-                        bits: 0,
-                    });
+                    self.current = Some(TxnRecord { start: n + 1, end: 0, frame: *f, reply_model: 0, reply_rtl: 0, bits: 0 });
                 }
                 Txn::Pins { levels, .. } => {
                     self.pin_changes += 1;
@@ -328,11 +319,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
     // the reset states must agree before the first edge
     let (mo, mp0, rp0) = (side.mo, side.model.probes(), rtl.probes());
     if !agree(cfg.compare, &mo, &mp0, &ro, &rp0) {
-        out.mismatch = Some(Mismatch {
-            cycle: 0,
-            diffs: diff(cfg.compare, &flatten(&mo, &mp0), &flatten(&ro, &rp0)),
-            history: Vec::new(),
-        });
+        out.mismatch = Some(Mismatch { cycle: 0, diffs: diff(cfg.compare, &flatten(&mo, &mp0), &flatten(&ro, &rp0)), history: Vec::new() });
         out.coverage = side.cov;
         return Ok(out);
     }
@@ -346,10 +333,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         if let Some((path, from, _)) = trace {
             if n == from {
                 let title = format!("tmc429 cosim {} seed {}: model and RTL", cfg.variant, cfg.seed);
-                writer = Some(
-                    TraceWriter::create(path, cfg.fclk, &title)
-                        .map_err(|e| format!("{}: {e}", path.display()))?,
-                );
+                writer = Some(TraceWriter::create(path, cfg.fclk, &title).map_err(|e| format!("{}: {e}", path.display()))?);
                 rtl.trace_open(&rtl_trace_path(path), cfg.fclk)?;
             }
         }
@@ -366,8 +350,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         let ok = agree(cfg.compare, &mo, &mp, &ro, &rp);
         if let Some(w) = writer.as_mut() {
             let txt = ended.map(|c| c.short(chip));
-            w.tick(n, &inp, &mo, &mp, &ro, &rp, !ok, txt.as_deref())
-                .map_err(|e| format!("writing VCD: {e}"))?;
+            w.tick(n, &inp, &mo, &mp, &ro, &rp, !ok, txt.as_deref()).map_err(|e| format!("writing VCD: {e}"))?;
             if n + 1 >= t_to {
                 if let Some(w) = writer.take() {
                     w.finish().map_err(|e| format!("writing VCD: {e}"))?;
@@ -384,11 +367,7 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
                     h.remove(0);
                 }
             }
-            out.mismatch = Some(Mismatch {
-                cycle: n + 1,
-                diffs: diff(cfg.compare, &flatten(&mo, &mp), &flatten(&ro, &rp)),
-                history: h,
-            });
+            out.mismatch = Some(Mismatch { cycle: n + 1, diffs: diff(cfg.compare, &flatten(&mo, &mp), &flatten(&ro, &rp)), history: h });
             counted = (n + 1, side.frames, side.pin_changes);
             if trace.is_none() || n + 1 >= t_to {
                 break;

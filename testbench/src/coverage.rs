@@ -10,10 +10,8 @@ use tmc429_model::{chain, current, motor, stepdir, Chip, Outputs, Probes, Tmc429
 use crate::stimulus::{Frame, PinLevels, Profile, MIN_HALF};
 
 /// Interrupt flag names, bit 0 first ([428] Table 8-7).
-pub const FLAG_NAMES: [&str; 8] = [
-    "POS_END", "REF_WRONG", "REF_MISS", "STOP", "STOP_LEFT_LOW", "STOP_RIGHT_LOW",
-    "STOP_LEFT_HIGH", "STOP_RIGHT_HIGH",
-];
+pub const FLAG_NAMES: [&str; 8] =
+    ["POS_END", "REF_WRONG", "REF_MISS", "STOP", "STOP_LEFT_LOW", "STOP_RIGHT_LOW", "STOP_LEFT_HIGH", "STOP_RIGHT_HIGH"];
 
 /// Name of a register address for reports: `x_target[1]` (motor 1..3 as in the datasheet),
 /// `ram_microstep_table[word 40]`, `unused $37`.
@@ -63,8 +61,14 @@ struct MotionSeen {
 
 /// The bin of a step at each usrs (named without formatting: it is hit in the per-cycle path).
 const USRS_STEP_BINS: [&str; 8] = [
-    "step with usrs 0", "step with usrs 1", "step with usrs 2", "step with usrs 3",
-    "step with usrs 4", "step with usrs 5", "step with usrs 6", "step with usrs 7",
+    "step with usrs 0",
+    "step with usrs 1",
+    "step with usrs 2",
+    "step with usrs 3",
+    "step with usrs 4",
+    "step with usrs 5",
+    "step with usrs 6",
+    "step with usrs 7",
 ];
 
 /// Ramp mode names ([428] Table 8-3).
@@ -142,8 +146,7 @@ impl Coverage {
                     let n = reg_name(chip, a7);
                     let chain_word = matches!(r.name, "cover_datagram" | "datagram_low_word" | "datagram_high_word");
                     let core_chain_word = profile == Profile::MotionCore && chain_word;
-                    let writable_in_profile =
-                        !(profile == Profile::Registers && r.name == "cover_datagram" || core_chain_word);
+                    let writable_in_profile = !(profile == Profile::Registers && r.name == "cover_datagram" || core_chain_word);
                     if writable_in_profile {
                         names.push(format!("write {n}"));
                     }
@@ -233,9 +236,7 @@ impl Coverage {
         let motion = matches!(profile, Profile::Motion | Profile::MotionCore);
         if motion {
             let chain_only = ["cover datagram sent", "refmux: switches sampled"];
-            names.extend(
-                motion_bins(chip).into_iter().filter(|n| profile == Profile::Motion || !chain_only.contains(&n.as_str())),
-            );
+            names.extend(motion_bins(chip).into_iter().filter(|n| profile == Profile::Motion || !chain_only.contains(&n.as_str())));
         }
         Coverage {
             bins: names.into_iter().map(|n| (n, 0)).collect(),
@@ -328,9 +329,7 @@ impl Coverage {
                         }
                     }
                 }
-                (false, 2) if self.last_cover_pos == 63 && (data >> 8) & 63 == 0 => {
-                    self.hit("cover_pos 63 reads back 0")
-                }
+                (false, 2) if self.last_cover_pos == 63 && (data >> 8) & 63 == 0 => self.hit("cover_pos 63 reads back 0"),
                 (false, 6) if data & 1 == 1 => self.hit("pos_comp match sets I"),
                 (false, 9) if data == 0x429101 => self.hit("type_version reads $429101"),
                 (false, 14) => {

@@ -10,8 +10,8 @@
 //! - [`pair`]: the lock-step pair on two threads (model side and RTL side);
 //! - [`vectors`]: test vectors from the golden model (docs/vectors.md).
 pub mod cosim;
-mod motion_stim;
 pub mod coverage;
+mod motion_stim;
 pub mod pair;
 pub mod rtl;
 pub mod signals;

@@ -112,10 +112,7 @@ impl Stimulus {
                 let m = self.motor();
                 let (a, b, c) = (self.draw(0u32..8), self.draw(0u32..8), self.draw(0u32..8));
                 let th = self.draw(prop_oneof![3 => 0u32..64, 1 => 0u32..2048]);
-                vec![w(
-                    ma7(m, idx::CURRENT_SCALING),
-                    f::IS_AGTAT.put(a) | f::IS_ALEAT.put(b) | f::IS_V0.put(c) | f::A_THRESHOLD.put(th),
-                )]
+                vec![w(ma7(m, idx::CURRENT_SCALING), f::IS_AGTAT.put(a) | f::IS_ALEAT.put(b) | f::IS_V0.put(c) | f::A_THRESHOLD.put(th))]
             }
             Kind::Chain => self.chain_seq(),
             Kind::Cover => {
@@ -283,9 +280,8 @@ impl Stimulus {
                 }
             }
         }
-        let mut s: Vec<Txn> = (0..32u8)
-            .map(|a| w(0x40 | a, (cells[2 * a as usize + 1] as u32) << 8 | cells[2 * a as usize] as u32))
-            .collect();
+        let mut s: Vec<Txn> =
+            (0..32u8).map(|a| w(0x40 | a, (cells[2 * a as usize + 1] as u32) << 8 | cells[2 * a as usize] as u32)).collect();
         let clk2 = self.draw(prop_oneof![3 => 0u32..16, 1 => 0u32..256]);
         let pol = self.draw(0u32..64) & 0x3C; // polarity bits 2..5
         let dac = self.draw(any::<bool>()) as u32;

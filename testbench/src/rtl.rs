@@ -391,10 +391,7 @@ impl Rtl {
     /// made by [`Rtl::new_traced`]).
     pub fn trace_open(&mut self, path: &Path, fclk_hz: u64) -> Result<(), String> {
         if !self.traced {
-            return Err(format!(
-                "{}: this RTL model has no trace code (Rtl::new_traced makes one that has)",
-                path.display()
-            ));
+            return Err(format!("{}: this RTL model has no trace code (Rtl::new_traced makes one that has)", path.display()));
         }
         let s = path.to_str().ok_or_else(|| format!("{}: path is not UTF-8", path.display()))?;
         let period = period_ps(fclk_hz);

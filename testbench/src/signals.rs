@@ -65,11 +65,7 @@ pub static SIGNALS: [Signal; N_SIGNALS] = {
         s("chain", "cover_waiting", 1, false),
         s("chain", "readback", 48, false),
     ];
-    let global = [
-        s("top", "prescaler", 32, false),
-        s("top", "power_down", 1, false),
-        s("top", "status", 8, false),
-    ];
+    let global = [s("top", "prescaler", 32, false), s("top", "power_down", 1, false), s("top", "status", 8, false)];
     let mut out = [s("", "", 0, false); N_SIGNALS];
     let mut i = 0;
     let mut j = 0;
@@ -110,10 +106,7 @@ pub fn index_of(full: &str) -> Option<usize> {
 /// All pins and probes as raw bit patterns (signed values masked to their width).
 pub fn flatten(o: &Outputs, p: &Probes) -> [u64; N_SIGNALS] {
     let mut v = [0u64; N_SIGNALS];
-    let pins = [
-        o.nint_sdo_c, o.sdoz_c, o.sdoz_c_oe, o.nscs_s, o.sck_s, o.sdo_s, o.sdi_s_o, o.sdi_s_oe,
-        o.nscs2, o.nscs3, o.poscmp,
-    ];
+    let pins = [o.nint_sdo_c, o.sdoz_c, o.sdoz_c_oe, o.nscs_s, o.sck_s, o.sdo_s, o.sdi_s_o, o.sdi_s_oe, o.nscs2, o.nscs3, o.poscmp];
     for (i, b) in pins.iter().enumerate() {
         v[i] = *b as u64;
     }
@@ -136,15 +129,7 @@ pub fn flatten(o: &Outputs, p: &Probes) -> [u64; N_SIGNALS] {
         }
     }
     let c = &p.chain;
-    for x in [
-        c.state as u64,
-        c.cell as u64,
-        c.motor as u64,
-        c.bit_count as u64,
-        c.pending as u64,
-        c.cover_waiting as u64,
-        c.readback,
-    ] {
+    for x in [c.state as u64, c.cell as u64, c.motor as u64, c.bit_count as u64, c.pending as u64, c.cover_waiting as u64, c.readback] {
         v[i] = x;
         i += 1;
     }
@@ -190,10 +175,7 @@ impl Compare {
     /// (nSCS_S, SCK_S, SDO_S, SDI_S out, nSCS2, nSCS3) and the chain probes.
     pub fn without_chain() -> Compare {
         let mut c = Compare::all();
-        for n in [
-            "top.nscs_s", "top.sck_s", "top.sdo_s", "top.sdi_s_o", "top.sdi_s_oe", "top.nscs2",
-            "top.nscs3",
-        ] {
+        for n in ["top.nscs_s", "top.sck_s", "top.sdo_s", "top.sdi_s_o", "top.sdi_s_oe", "top.nscs2", "top.nscs3"] {
             c = c.without(n);
         }
         for s in SIGNALS.iter().filter(|s| s.scope == "chain") {
@@ -216,12 +198,7 @@ impl Compare {
 
     /// Names of the compared signals.
     pub fn names(self) -> Vec<String> {
-        SIGNALS
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| self.includes(*i))
-            .map(|(_, s)| format!("{}.{}", s.scope, s.name))
-            .collect()
+        SIGNALS.iter().enumerate().filter(|(i, _)| self.includes(*i)).map(|(_, s)| format!("{}.{}", s.scope, s.name)).collect()
     }
 }
 
@@ -288,8 +265,16 @@ mod tests {
     #[test]
     fn tristate_compared_only_when_enabled() {
         let o = Outputs {
-            nint_sdo_c: true, sdoz_c: false, sdoz_c_oe: false, nscs_s: true, sck_s: true,
-            sdo_s: false, sdi_s_o: false, sdi_s_oe: false, nscs2: true, nscs3: true,
+            nint_sdo_c: true,
+            sdoz_c: false,
+            sdoz_c_oe: false,
+            nscs_s: true,
+            sck_s: true,
+            sdo_s: false,
+            sdi_s_o: false,
+            sdi_s_oe: false,
+            nscs2: true,
+            nscs3: true,
             poscmp: false,
         };
         let p = Probes::default();
@@ -311,9 +296,22 @@ mod tests {
     fn signed_values_are_masked_and_formatted() {
         let mut p = Probes::default();
         p.motor[1].v_internal = -256;
-        let v = flatten(&Outputs { nint_sdo_c: true, sdoz_c: false, sdoz_c_oe: false,
-            nscs_s: true, sck_s: true, sdo_s: false, sdi_s_o: false, sdi_s_oe: false,
-            nscs2: true, nscs3: true, poscmp: false }, &p);
+        let v = flatten(
+            &Outputs {
+                nint_sdo_c: true,
+                sdoz_c: false,
+                sdoz_c_oe: false,
+                nscs_s: true,
+                sck_s: true,
+                sdo_s: false,
+                sdi_s_o: false,
+                sdi_s_oe: false,
+                nscs2: true,
+                nscs3: true,
+                poscmp: false,
+            },
+            &p,
+        );
         let i = index_of("motor1.v_internal").unwrap();
         assert_eq!(v[i], 0xFFF00);
         assert_eq!(format_value(&SIGNALS[i], v[i]), "0xfff00 (-256)");

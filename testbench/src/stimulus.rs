@@ -83,7 +83,10 @@ pub struct PinLevels {
 pub enum Txn {
     Frame(Frame),
     /// New levels of REF1..3, REFR1..3 and SDI_S, held for `hold` cycles.
-    Pins { levels: PinLevels, hold: u32 },
+    Pins {
+        levels: PinLevels,
+        hold: u32,
+    },
     /// Nothing changes for this many cycles.
     Idle(u32),
 }
@@ -144,7 +147,11 @@ impl Profile {
 
 /// Motors addressable on a chip (TMC4210: one axis, C21).
 pub fn motors(chip: Chip) -> usize {
-    if chip == Chip::Tmc4210 { 1 } else { 3 }
+    if chip == Chip::Tmc4210 {
+        1
+    } else {
+        3
+    }
 }
 
 /// Adjusts a frame to a profile (see [`Profile::Registers`], [`Profile::Drivers`], [`Profile::MotionCore`]).
@@ -169,8 +176,8 @@ pub fn sanitize(profile: Profile, f: &mut Frame) {
     let data = f.data();
     let new_data = if a7 < 0x30 {
         match a7 & 0xF {
-            10 => data | 3,              // rm = HOLD_MODE
-            5 => data & !0xFFF,          // v_actual = 0
+            10 => data | 3,     // rm = HOLD_MODE
+            5 => data & !0xFFF, // v_actual = 0
             _ => data,
         }
     } else if a7 == 0x33 {
@@ -178,7 +185,7 @@ pub fn sanitize(profile: Profile, f: &mut Frame) {
         f.datagram |= 1 << 24;
         data
     } else if a7 == 0x3F {
-        data & !(1 << 16 | 1 << 20)      // continuous_update, refmux
+        data & !(1 << 16 | 1 << 20) // continuous_update, refmux
     } else {
         data
     };
@@ -330,16 +337,14 @@ pub fn driver_sequence(chip: Chip, pick: &mut dyn FnMut(u32) -> u32) -> Vec<Txn>
 pub fn prologue(chip: Chip, profile: Profile) -> Vec<Txn> {
     match profile {
         Profile::Full | Profile::Motion | Profile::MotionCore => Vec::new(),
-        Profile::Registers | Profile::Drivers => (0..motors(chip))
-            .map(|m| Txn::Frame(Frame::write((m as u8) << 4 | 10, 3)))
-            .collect(),
+        Profile::Registers | Profile::Drivers => (0..motors(chip)).map(|m| Txn::Frame(Frame::write((m as u8) << 4 | 10, 3))).collect(),
     }
 }
 
 /// Data words at the edges of the fields.
 pub const BOUNDARY_DATA: [u32; 16] = [
-    0x000000, 0xFFFFFF, 0x800000, 0x7FFFFF, 0x000001, 0x0007FF, 0x000800, 0x000FFF, 0x00FFFF,
-    0x008000, 0x00FF00, 0x0000FF, 0x7FF7FF, 0x555555, 0xAAAAAA, 0x000F00,
+    0x000000, 0xFFFFFF, 0x800000, 0x7FFFFF, 0x000001, 0x0007FF, 0x000800, 0x000FFF, 0x00FFFF, 0x008000, 0x00FF00, 0x0000FF, 0x7FF7FF,
+    0x555555, 0xAAAAAA, 0x000F00,
 ];
 
 /// Strategy for a frame's datagram: any address (registers and RAM), read or write,
@@ -386,29 +391,14 @@ pub fn frame_strategy(chip: Chip) -> impl Strategy<Value = Frame> {
     ];
     let edge = prop_oneof![2 => Just(MIN_HALF), 1 => 4u32..12];
     let gap = prop_oneof![2 => Just(MIN_HALF), 2 => 4u32..40, 1 => 40u32..400];
-    (datagram_strategy(chip), any::<u32>(), nbits, half, edge.clone(), edge, gap).prop_map(
-        |(datagram, extra, nbits, half, setup, hold, gap)| Frame {
-            datagram,
-            extra,
-            nbits,
-            half,
-            setup,
-            hold,
-            gap,
-        },
-    )
+    (datagram_strategy(chip), any::<u32>(), nbits, half, edge.clone(), edge, gap)
+        .prop_map(|(datagram, extra, nbits, half, setup, hold, gap)| Frame { datagram, extra, nbits, half, setup, hold, gap })
 }
 
 /// Strategy for non-SPI pin changes: one pin toggled or all levels random.
 pub fn pins_strategy() -> impl Strategy<Value = (u8, PinLevels, u32)> {
-    (
-        0u8..8,
-        any::<[bool; 7]>(),
-        prop_oneof![3 => 1u32..16, 1 => 16u32..600],
-    )
-        .prop_map(|(which, b, hold)| {
-            (which, PinLevels { ref_: [b[0], b[1], b[2]], refr: [b[3], b[4], b[5]], sdi_s: b[6] }, hold)
-        })
+    (0u8..8, any::<[bool; 7]>(), prop_oneof![3 => 1u32..16, 1 => 16u32..600])
+        .prop_map(|(which, b, hold)| (which, PinLevels { ref_: [b[0], b[1], b[2]], refr: [b[3], b[4], b[5]], sdi_s: b[6] }, hold))
 }
 
 /// Kinds of generated step.
@@ -526,17 +516,13 @@ impl Stimulus {
                 let v = self.draw(prop_oneof![1 => Just(0u32), 3 => 0u32..0x100_0000]);
                 let mask = self.draw(any::<u8>()) as u32;
                 let w = |a7: u8, d: u32| Txn::Frame(Frame::write(a7, d));
-                let mut seq = vec![
-                    w(m << 4 | 11, mask << 8 | 0xFF),
-                    w(m << 4, (v + 1) & 0xFF_FFFF),
-                    w(m << 4 | 1, v ^ 0x40),
-                ];
+                let mut seq = vec![w(m << 4 | 11, mask << 8 | 0xFF), w(m << 4, (v + 1) & 0xFF_FFFF), w(m << 4 | 1, v ^ 0x40)];
                 if self.chip != Chip::Tmc428 {
                     seq.push(w(0x36, 0x100)); // pos_comp_int: M = 1
-                    seq.push(w(0x35, v));     // pos_comp
+                    seq.push(w(0x35, v)); // pos_comp
                 }
-                seq.push(w(m << 4 | 1, v));   // x_actual = pos_comp
-                seq.push(w(m << 4, v));       // x_target = x_actual
+                seq.push(w(m << 4 | 1, v)); // x_actual = pos_comp
+                seq.push(w(m << 4, v)); // x_target = x_actual
                 seq.push(Txn::Frame(Frame::read(m << 4 | 11)));
                 if self.chip != Chip::Tmc428 {
                     seq.push(Txn::Frame(Frame::read(0x36)));

@@ -15,8 +15,7 @@ use tmc429_model::{Inputs, Outputs, Probes};
 use crate::signals::{flatten, N_SIGNALS, SIGNALS};
 
 /// The input pins in the VCD's `top` scope.
-pub const INPUT_NAMES: [&str; 10] =
-    ["nscs_c", "sck_c", "sdi_c", "sdi_s", "ref1", "ref2", "ref3", "refr1", "refr2", "refr3"];
+pub const INPUT_NAMES: [&str; 10] = ["nscs_c", "sck_c", "sdi_c", "sdi_s", "ref1", "ref2", "ref3", "refr1", "refr2", "refr3"];
 
 /// The input pins in the order of [`INPUT_NAMES`].
 pub fn input_bits(i: &Inputs) -> [bool; 10] {

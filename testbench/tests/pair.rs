@@ -119,8 +119,17 @@ fn run_pair_finds_the_first_disagreeing_cycle() {
 /// Flips the lowest bit of signal `k` (the order of `signals::SIGNALS`).
 fn poke(o: &mut tmc429_model::Outputs, p: &mut tmc429_model::Probes, k: usize) {
     let pins = [
-        &mut o.nint_sdo_c, &mut o.sdoz_c, &mut o.sdoz_c_oe, &mut o.nscs_s, &mut o.sck_s, &mut o.sdo_s,
-        &mut o.sdi_s_o, &mut o.sdi_s_oe, &mut o.nscs2, &mut o.nscs3, &mut o.poscmp,
+        &mut o.nint_sdo_c,
+        &mut o.sdoz_c,
+        &mut o.sdoz_c_oe,
+        &mut o.nscs_s,
+        &mut o.sck_s,
+        &mut o.sdo_s,
+        &mut o.sdi_s_o,
+        &mut o.sdi_s_oe,
+        &mut o.nscs2,
+        &mut o.nscs3,
+        &mut o.poscmp,
     ];
     if k < 11 {
         *pins[k] ^= true;

@@ -143,14 +143,8 @@ fn one_datagram(b: &mut Bench) -> (u32, u64) {
 /// spec-digest §5.2: Table 11-2 configuration, Table 12-2 LUT, LSMD 2, microstep index w.
 #[test]
 fn digest_5_2_datagrams_on_the_pins() {
-    let cases: [(u8, u64); 6] = [
-        (0, 0x05F05F07F),
-        (16, 0x35D35D37D),
-        (64, 0x7C07C0FC0),
-        (100, 0x55805F07F),
-        (128, 0x01E05F07F),
-        (200, 0x78705F07F),
-    ];
+    let cases: [(u8, u64); 6] =
+        [(0, 0x05F05F07F), (16, 0x35D35D37D), (64, 0x7C07C0FC0), (100, 0x55805F07F), (128, 0x01E05F07F), (200, 0x78705F07F)];
     for (w, want) in cases {
         let mut b = table_11_2_chip();
         let ws = if w == 16 || w == 64 { [w; 3] } else { [w, 0, 0] };
@@ -183,11 +177,7 @@ fn tmc429_power_on_datagram() {
 /// C85, TMC428 §9.3: cover datagram positions and lengths.
 #[test]
 fn cover_datagram_bits() {
-    for (pos, len, data, want) in [
-        (0u32, 12u32, 0xABCu32, 0xABC05F07Fu64),
-        (4, 31, 0xFFFFFF, 0x0FFFFFF7F),
-        (30, 12, 0xA80, 0x05F05F06A),
-    ] {
+    for (pos, len, data, want) in [(0u32, 12u32, 0xABCu32, 0xABC05F07Fu64), (4, 31, 0xFFFFFF, 0x0FFFFFF7F), (30, 12, 0xA80, 0x05F05F06A)] {
         let mut b = table_11_2_chip();
         b.write(COVER_POS_LEN, pos << 8 | len);
         b.trace.clear();
@@ -245,9 +235,7 @@ fn chip_selects_and_polarities() {
     b.trace.clear();
     b.write(COVER_DATAGRAM, 0);
     b.wait(1500);
-    let rising = |sel: &dyn Fn(&Outputs) -> bool| {
-        b.trace.windows(2).filter(|w| !w[0].sck_s && w[1].sck_s && sel(&w[0])).count()
-    };
+    let rising = |sel: &dyn Fn(&Outputs) -> bool| b.trace.windows(2).filter(|w| !w[0].sck_s && w[1].sck_s && sel(&w[0])).count();
     assert_eq!(rising(&|o| !o.nscs_s && o.nscs2 && o.nscs3), 12);
     assert_eq!(rising(&|o| o.nscs_s && !o.nscs2 && o.nscs3), 12);
     assert_eq!(rising(&|o| o.nscs_s && o.nscs2 && !o.nscs3), 12);

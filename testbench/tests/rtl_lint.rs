@@ -5,10 +5,5 @@
 fn rtl_lint_is_clean() {
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../scripts/rtl-lint");
     let out = std::process::Command::new("bash").arg(script).output().expect("run scripts/rtl-lint");
-    assert!(
-        out.status.success(),
-        "rtl-lint failed:\n{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "rtl-lint failed:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
 }

@@ -108,8 +108,11 @@ fn soft_mode_linear_law() {
     assert_eq!(first_tick(Chip::Tmc429, 1, 1, 2, 5, 2047, P_ONE), 5);
     for pdiv in 0..16u32 {
         let want = ((200u64 * 40_000) >> (3 + pdiv)).min(2047) as u32;
-        assert_eq!(first_tick(Chip::Tmc429, 0, 1, (-40_000i32) as u32 & 0xFF_FFFF, 0, 2047, 0xC800 | pdiv),
-            (-(want as i32)) as u32 & 0xFFF, "pdiv {pdiv}");
+        assert_eq!(
+            first_tick(Chip::Tmc429, 0, 1, (-40_000i32) as u32 & 0xFF_FFFF, 0, 2047, 0xC800 | pdiv),
+            (-(want as i32)) as u32 & 0xFFF,
+            "pdiv {pdiv}"
+        );
     }
 }
 

@@ -39,21 +39,9 @@ const MVP_T: &[(&str, u8)] = &[("ABS", 0), ("REL", 1), ("COORD", 2)];
 const RFS_T: &[(&str, u8)] = &[("START", 0), ("STOP", 1), ("STATUS", 2)];
 const CALC_T: &[(&str, u8)] =
     &[("ADD", 0), ("SUB", 1), ("MUL", 2), ("DIV", 3), ("MOD", 4), ("AND", 5), ("OR", 6), ("XOR", 7), ("NOT", 8), ("LOAD", 9)];
-const CALCX_T: &[(&str, u8)] = &[
-    ("ADD", 0),
-    ("SUB", 1),
-    ("MUL", 2),
-    ("DIV", 3),
-    ("MOD", 4),
-    ("AND", 5),
-    ("OR", 6),
-    ("XOR", 7),
-    ("NOT", 8),
-    ("LOAD", 9),
-    ("SWAP", 10),
-];
-const JC_T: &[(&str, u8)] =
-    &[("ZE", 0), ("NZ", 1), ("EQ", 2), ("NE", 3), ("GT", 4), ("GE", 5), ("LT", 6), ("LE", 7), ("ETO", 8)];
+const CALCX_T: &[(&str, u8)] =
+    &[("ADD", 0), ("SUB", 1), ("MUL", 2), ("DIV", 3), ("MOD", 4), ("AND", 5), ("OR", 6), ("XOR", 7), ("NOT", 8), ("LOAD", 9), ("SWAP", 10)];
+const JC_T: &[(&str, u8)] = &[("ZE", 0), ("NZ", 1), ("EQ", 2), ("NE", 3), ("GT", 4), ("GE", 5), ("LT", 6), ("LE", 7), ("ETO", 8)];
 const WAIT_T: &[(&str, u8)] = &[("TICKS", 0), ("POS", 1), ("REFSW", 2), ("LIMSW", 3), ("RFS", 4)];
 const CLE_T: &[(&str, u8)] = &[("ALL", 0), ("ETO", 1), ("EAL", 2), ("EDV", 3), ("EPO", 4)];
 const NUM: &[(&str, u8)] = &[];
@@ -395,19 +383,14 @@ impl<'a> Expr<'a> {
                 self.i += 1;
             }
             let digits = text(ds, self.i, self.s);
-            return i64::from_str_radix(&digits, radix)
-                .map_err(|_| format!("'{}' is not a number", text(start, self.i, self.s)));
+            return i64::from_str_radix(&digits, radix).map_err(|_| format!("'{}' is not a number", text(start, self.i, self.s)));
         }
         if is_ident_start(c) {
             while self.i < self.s.len() && is_ident(self.s[self.i] as char) {
                 self.i += 1;
             }
             let name = text(start, self.i, self.s);
-            return self
-                .syms
-                .get(&name)
-                .copied()
-                .ok_or_else(|| format!("unknown symbol '{name}'"));
+            return self.syms.get(&name).copied().ok_or_else(|| format!("unknown symbol '{name}'"));
         }
         Err(format!("unexpected '{c}' where a value was expected"))
     }
@@ -435,11 +418,7 @@ fn parse_ins(text: &str, syms: &HashMap<String, i64>) -> Result<Instruction, Str
     let ops = split_operands(rest);
     let min = spec.slots.len() - spec.optional;
     if ops.len() < min || ops.len() > spec.slots.len() {
-        let want = if spec.optional > 0 {
-            format!("{} to {}", min, spec.slots.len())
-        } else {
-            format!("{}", spec.slots.len())
-        };
+        let want = if spec.optional > 0 { format!("{} to {}", min, spec.slots.len()) } else { format!("{}", spec.slots.len()) };
         return Err(format!("{} expects {want} operand(s), found {}", spec.name, ops.len()));
     }
     let mut ins = Instruction::new(spec.op, 0, 0, 0);
@@ -556,8 +535,7 @@ fn split_label(t: &str) -> (Option<&str>, &str) {
 fn split_const(t: &str) -> Option<(&str, &str)> {
     let p = t.find('=')?;
     let name = t[..p].trim();
-    (!name.is_empty() && name.chars().next().is_some_and(is_ident_start) && name.chars().all(is_ident))
-        .then(|| (name, &t[p + 1..]))
+    (!name.is_empty() && name.chars().next().is_some_and(is_ident_start) && name.chars().all(is_ident)).then(|| (name, &t[p + 1..]))
 }
 
 /// Assembles a source text. `file` names it in errors and anchors `#include`.
@@ -625,11 +603,7 @@ pub fn format_ins(i: &Instruction, label: &dyn Fn(i32) -> String) -> String {
     let mut ops = Vec::new();
     for s in spec.slots {
         ops.push(match s {
-            Type(kw) => kw
-                .iter()
-                .find(|(_, n)| *n == i.typ)
-                .map(|(n, _)| n.to_string())
-                .unwrap_or_else(|| i.typ.to_string()),
+            Type(kw) => kw.iter().find(|(_, n)| *n == i.typ).map(|(n, _)| n.to_string()).unwrap_or_else(|| i.typ.to_string()),
             Motor => i.motor.to_string(),
             Value => i.value.to_string(),
             Addr => label(i.value),

@@ -27,11 +27,11 @@ pub trait Spi429 {
 /// Register addresses and bits of the TMC429, from the model's register map.
 pub mod reg {
     use tmc429_model::motor;
-    use tmc429_model::regmap::{f, global_a7, jdx};
     pub use tmc429_model::regmap::idx::{
         A_ACTUAL, A_MAX, CLK_CONFIG as PULSEDIV_RAMPDIV, DX_REF_TOLERANCE, INTERRUPT as INT_MASK_FLAGS, PMUL_PDIV,
         REF_CONF_RM as REFCONF_RM, V_ACTUAL, V_MAX, V_MIN, V_TARGET, X_ACTUAL, X_TARGET,
     };
+    use tmc429_model::regmap::{f, global_a7, jdx};
     /// Motor register address: `SMDA = m`, `IDX = idx`.
     pub fn motor(m: usize, idx: u8) -> u8 {
         tmc429_model::regmap::motor_a7(m as u8, idx)

@@ -81,8 +81,7 @@ impl Default for AxisConfig {
 }
 
 /// Axis parameter numbers that STAP/RSAP accept, in the order of the EEPROM image.
-pub const STORED_AXIS_PARAMS: [u8; 19] =
-    [4, 5, 6, 7, 12, 13, 130, 138, 140, 141, 149, 153, 154, 193, 194, 195, 200, 204, 214];
+pub const STORED_AXIS_PARAMS: [u8; 19] = [4, 5, 6, 7, 12, 13, 130, 138, 140, 141, 149, 153, 154, 193, 194, 195, 200, 204, 214];
 
 impl AxisConfig {
     pub fn get(&self, p: u8) -> Option<i32> {
@@ -154,9 +153,7 @@ impl AxisConfig {
     }
     pub fn valid_value(p: u8, v: i32) -> bool {
         match Self::range(p) {
-            Some((lo, hi)) => {
-                v >= lo && v <= hi && (p != 193 || matches!(v & 0x7f, 1..=8) && (v & !0xff) == 0)
-            }
+            Some((lo, hi)) => v >= lo && v <= hi && (p != 193 || matches!(v & 0x7f, 1..=8) && (v & !0xff) == 0),
             None => false,
         }
     }

@@ -172,19 +172,9 @@ impl Link {
     fn ascii_line<C: Spi429>(&mut self, m: &mut Module<C>, line: &str, overflow: bool, out: &mut Vec<u8>) {
         // The address character is the first one of the line (it matched).
         let body = line.get(1..).unwrap_or("").trim();
-        let (status, value) = if overflow {
-            (Status::InvalidCommand.code(), 0)
-        } else {
-            ascii_execute(m, body, &mut self.mode)
-        };
+        let (status, value) = if overflow { (Status::InvalidCommand.code(), 0) } else { ascii_execute(m, body, &mut self.mode) };
         let (module_addr, host_addr) = m.addresses();
-        let text = format!(
-            "{}{} {} {}\r",
-            address_char(host_addr) as char,
-            address_char(module_addr) as char,
-            status,
-            value
-        );
+        let text = format!("{}{} {} {}\r", address_char(host_addr) as char, address_char(module_addr) as char, status, value);
         out.extend_from_slice(text.as_bytes());
     }
 }

@@ -100,12 +100,25 @@ impl Default for Vm {
 enum RfsPhase {
     Idle,
     /// Looking for the switch at search speed in direction `dir`; reverse at the end switch on `rev`.
-    Find { sw: Sw, dir: i32, rev: Option<Sw>, reversed: bool },
+    Find {
+        sw: Sw,
+        dir: i32,
+        rev: Option<Sw>,
+        reversed: bool,
+    },
     /// Moving back out of the switch at switch speed; `armed` once the switch was seen active
     /// while moving in direction `dir`.
-    Leave { sw: Sw, dir: i32, armed: bool },
+    Leave {
+        sw: Sw,
+        dir: i32,
+        armed: bool,
+    },
     /// Re-entering the switch at switch speed; `p1` = where it was left.
-    Enter { sw: Sw, dir: i32, p1: i32 },
+    Enter {
+        sw: Sw,
+        dir: i32,
+        p1: i32,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -1202,13 +1215,7 @@ impl<C: Spi429> Module<C> {
     }
 
     pub fn reply(&self, status: u8, op: u8, value: i32) -> Reply {
-        Reply {
-            host: self.global.host_address as u8,
-            module: self.global.serial_address as u8,
-            status,
-            op,
-            value,
-        }
+        Reply { host: self.global.host_address as u8, module: self.global.serial_address as u8, status, op, value }
     }
 
     /// Module address (global parameter 66) and host address (76).
@@ -1564,11 +1571,7 @@ impl<C: Spi429> Module<C> {
                 let w = Wait {
                     kind: ins.typ,
                     motor: ins.motor.min(AXES as u8 - 1),
-                    deadline: if ins.typ == 0 || ins.value > 0 {
-                        Some(now + 10 * (ins.value.max(0) as u64))
-                    } else {
-                        None
-                    },
+                    deadline: if ins.typ == 0 || ins.value > 0 { Some(now + 10 * (ins.value.max(0) as u64)) } else { None },
                 };
                 if ins.typ > 4 || (ins.typ > 0 && ins.motor as usize >= AXES) {
                     self.vm.state = AppState::Stop;

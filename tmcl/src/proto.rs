@@ -134,12 +134,7 @@ impl Instruction {
         [self.op, self.typ, self.motor, v[0], v[1], v[2], v[3]]
     }
     pub fn from_bytes7(b: &[u8; 7]) -> Self {
-        Instruction {
-            op: b[0],
-            typ: b[1],
-            motor: b[2],
-            value: i32::from_be_bytes([b[3], b[4], b[5], b[6]]),
-        }
+        Instruction { op: b[0], typ: b[1], motor: b[2], value: i32::from_be_bytes([b[3], b[4], b[5], b[6]]) }
     }
 }
 
@@ -223,13 +218,7 @@ impl Reply {
         if computed != b[8] {
             return Err(FrameError::Checksum { received: b[8], computed });
         }
-        Ok(Reply {
-            host: b[0],
-            module: b[1],
-            status: b[2],
-            op: b[3],
-            value: i32::from_be_bytes([b[4], b[5], b[6], b[7]]),
-        })
+        Ok(Reply { host: b[0], module: b[1], status: b[2], op: b[3], value: i32::from_be_bytes([b[4], b[5], b[6], b[7]]) })
     }
     pub fn status(&self) -> Option<Status> {
         Status::from_code(self.status)

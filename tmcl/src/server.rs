@@ -70,12 +70,7 @@ impl Server {
             return Err(format!("--time-scale must be a positive number, got {}", opt.time_scale));
         }
         let start_cycle = module.chip.cycle();
-        let shared = Arc::new(Mutex::new(Shared {
-            module,
-            start_wall: Instant::now(),
-            start_cycle,
-            time_scale: opt.time_scale,
-        }));
+        let shared = Arc::new(Mutex::new(Shared { module, start_wall: Instant::now(), start_cycle, time_scale: opt.time_scale }));
         let stop = Arc::new(AtomicBool::new(false));
         let mut threads = Vec::new();
         let mut tcp_addr = None;
@@ -211,11 +206,7 @@ impl Pty {
                 return Err(format!("ptsname failed: {}", std::io::Error::last_os_error()));
             }
             let path = std::ffi::CStr::from_ptr(name.as_ptr()).to_string_lossy().into_owned();
-            let slave = std::fs::OpenOptions::new()
-                .read(true)
-                .write(true)
-                .open(&path)
-                .map_err(|e| format!("cannot open {path}: {e}"))?;
+            let slave = std::fs::OpenOptions::new().read(true).write(true).open(&path).map_err(|e| format!("cannot open {path}: {e}"))?;
             // Raw mode: bytes pass unchanged, no echo by the line discipline.
             use std::os::unix::io::AsRawFd;
             let sfd = slave.as_raw_fd();

@@ -12,8 +12,6 @@ use tmcl::proto::{op, Instruction};
 use tmcl::server::{Options, Server};
 use tmcl::{Module, Response};
 
-
-
 fn direct(m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32) -> (u8, i32) {
     match m.handle_instruction(&Instruction::new(o, t, mo, v)) {
         Response::Normal(r) => (r.status, r.value),
@@ -216,11 +214,8 @@ fn ask(s: &mut std::net::TcpStream, f: [u8; 9]) -> [u8; 9] {
 
 #[test]
 fn server_survives_garbage_and_floods() {
-    let srv = Server::start(
-        module(),
-        &Options { tcp: Some("127.0.0.1:0".into()), pty: false, time_scale: 1.0, frame_timeout_ms: 50 },
-    )
-    .unwrap();
+    let srv =
+        Server::start(module(), &Options { tcp: Some("127.0.0.1:0".into()), pty: false, time_scale: 1.0, frame_timeout_ms: 50 }).unwrap();
     let addr = srv.tcp_addr.unwrap();
     let mut good = connect(addr);
     assert_eq!(ask(&mut good, frame([1, 5, 4, 0, 0, 0, 0x04, 0xb0])), frame([2, 1, 100, 5, 0, 0, 0x04, 0xb0]));

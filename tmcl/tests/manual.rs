@@ -9,8 +9,6 @@ use tmcl::chip::ModelChip;
 use tmcl::proto::{checksum, op, Command, Instruction, Reply, Status};
 use tmcl::{Module, Response};
 
-
-
 fn send(m: &mut Module<ModelChip>, b8: [u8; 8]) -> Vec<u8> {
     m.handle_bytes(&frame(b8)).to_bytes()
 }
@@ -171,9 +169,16 @@ fn every_status_code() {
     assert_eq!(st(&mut m, op::STOP, 0, 0, 0), Status::Loaded.code());
     assert_eq!(st(&mut m, op::DOWNLOAD_END, 0, 0, 0), Status::Ok.code());
     assert_eq!(m.program().len(), 2);
-    for (c, s) in [(100, "Successfully executed, no error"), (101, "Command loaded into TMCL program EEPROM"),
-        (1, "Wrong checksum"), (2, "Invalid command"), (3, "Wrong type"), (4, "Invalid value"),
-        (5, "Configuration EEPROM locked"), (6, "Command not available")] {
+    for (c, s) in [
+        (100, "Successfully executed, no error"),
+        (101, "Command loaded into TMCL program EEPROM"),
+        (1, "Wrong checksum"),
+        (2, "Invalid command"),
+        (3, "Wrong type"),
+        (4, "Invalid value"),
+        (5, "Configuration EEPROM locked"),
+        (6, "Command not available"),
+    ] {
         assert_eq!(Status::from_code(c).unwrap().meaning(), s);
     }
 }

@@ -12,7 +12,6 @@ use tmcl::module::AppState;
 use tmcl::proto::{op, Instruction};
 use tmcl::{Module, Origin, Response};
 
-
 fn assemble(src: &str) -> Vec<Instruction> {
     let p = asm::assemble(Path::new("example.tmc"), src, &asm::FileSystem).unwrap_or_else(|e| panic!("{e}"));
     // Round trip: disassembly assembles to the same binary.
@@ -65,7 +64,8 @@ fn timer_interrupt_example_5_6_5() {
     assert_eq!(code[0], Instruction::new(op::VECT, 0, 0, 9));
     assert_eq!(code[8], Instruction::new(op::JA, 0, 0, 4));
     // The variant with Interrupts.inc assembles to the same first four instructions.
-    let inc = "#include Interrupts.inc\n  VECT TI_TIMER0, Timer0Irq\n  SGP TI_TIMER0, 3, 1000\n  EI TI_TIMER0\n  EI TI_GLOBAL\nTimer0Irq: RETI\n";
+    let inc =
+        "#include Interrupts.inc\n  VECT TI_TIMER0, Timer0Irq\n  SGP TI_TIMER0, 3, 1000\n  EI TI_TIMER0\n  EI TI_GLOBAL\nTimer0Irq: RETI\n";
     let c2 = assemble(inc);
     assert_eq!(&c2[1..4], &code[1..4]);
     assert_eq!(c2[0], Instruction::new(op::VECT, 0, 0, 4));
@@ -226,7 +226,7 @@ fn mixing_direct_and_standalone_11_6() {
     m.run_ms(1000);
     assert_eq!(direct(&mut m, op::GGP, 128, 0, 0), (100, 0)); // stopped
     assert_eq!(direct(&mut m, op::GAP, 2, 0, 0), (100, 0)); // MST
-    // Address 0: the first function moves to 1000 and back to 0, then stops.
+                                                            // Address 0: the first function moves to 1000 and back to 0, then stops.
     assert_eq!(direct(&mut m, op::APP_RUN, 1, 0, 0).0, 100);
     let mut seen = 0;
     for _ in 0..300 {
@@ -284,7 +284,8 @@ fn calc_comp_jc_and_nesting() {
 
 #[test]
 fn wait_timeout_sets_eto() {
-    let code = assemble("MVP ABS, 0, 100000\nWAIT POS, 0, 5\nJC ETO, T\nSTOP\nT: SGP 0, 2, 1\nCLE ETO\nJC ETO, Bad\nSTOP\nBad: SGP 1, 2, 1\n");
+    let code =
+        assemble("MVP ABS, 0, 100000\nWAIT POS, 0, 5\nJC ETO, T\nSTOP\nT: SGP 0, 2, 1\nCLE ETO\nJC ETO, Bad\nSTOP\nBad: SGP 1, 2, 1\n");
     let mut m = module();
     start(&mut m, &code);
     m.run_ms(100);
@@ -312,11 +313,9 @@ fn assembler_errors_name_file_and_line() {
 #[test]
 fn serial_heartbeat_stops_the_motors() {
     let mut m = module();
-    let cmd = |m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32| {
-        match m.handle_instruction(&Instruction::new(o, t, mo, v)) {
-            Response::Normal(r) => assert_eq!(r.status, 100, "op {o}"),
-            other => panic!("op {o}: {other:?}"),
-        }
+    let cmd = |m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32| match m.handle_instruction(&Instruction::new(o, t, mo, v)) {
+        Response::Normal(r) => assert_eq!(r.status, 100, "op {o}"),
+        other => panic!("op {o}: {other:?}"),
     };
     cmd(&mut m, op::SGP, 68, 0, 100);
     cmd(&mut m, op::ROR, 0, 0, 300);

@@ -5,7 +5,6 @@ use tmcl::chip::ModelChip;
 use tmcl::proto::{op, Instruction};
 use tmcl::{Module, Response};
 
-
 fn cmd(m: &mut Module<ModelChip>, o: u8, t: u8, mo: u8, v: i32) -> (u8, i32) {
     match m.handle_instruction(&Instruction::new(o, t, mo, v)) {
         Response::Normal(r) => (r.status, r.value),

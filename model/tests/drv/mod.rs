@@ -24,7 +24,8 @@ pub fn host_with_events(chip: Chip) -> (Host, Arc<Mutex<Vec<Event>>>) {
 }
 
 pub fn chains(log: &Arc<Mutex<Vec<Event>>>) -> Vec<(u64, u32, u64)> {
-    log.lock().unwrap()
+    log.lock()
+        .unwrap()
         .iter()
         .filter_map(|e| match *e {
             Event::Chain { cycle, nbits, bits } => Some((cycle, nbits, bits)),
@@ -34,7 +35,8 @@ pub fn chains(log: &Arc<Mutex<Vec<Event>>>) -> Vec<(u64, u32, u64)> {
 }
 
 pub fn steps(log: &Arc<Mutex<Vec<Event>>>) -> Vec<(u64, u8, bool)> {
-    log.lock().unwrap()
+    log.lock()
+        .unwrap()
         .iter()
         .filter_map(|e| match *e {
             Event::Step { cycle, motor, negative } => Some((cycle, motor, negative)),
@@ -45,17 +47,15 @@ pub fn steps(log: &Arc<Mutex<Vec<Event>>>) -> Vec<(u64, u8, bool)> {
 
 /// TMC428 Table 11-3 configuration datagrams (Table 11-2 RAM contents).
 pub const TABLE_11_3: [u32; 18] = [
-    0x80000510, 0x82000304, 0x84000602, 0x86000D10, 0x88000B0C, 0x8A002E0A, 0x8C000510, 0x8E000304,
-    0x90000602, 0x92000D10, 0x94000B0C, 0x96002E0A, 0x98000507, 0x9A000304, 0x9C000602, 0x9E000D0F,
-    0xA0000B0C, 0xA2002E0A,
+    0x80000510, 0x82000304, 0x84000602, 0x86000D10, 0x88000B0C, 0x8A002E0A, 0x8C000510, 0x8E000304, 0x90000602, 0x92000D10, 0x94000B0C,
+    0x96002E0A, 0x98000507, 0x9A000304, 0x9C000602, 0x9E000D0F, 0xA0000B0C, 0xA2002E0A,
 ];
 
 /// TMC428 Table 12-2 LUT datagrams.
 pub const TABLE_12_2: [u32; 32] = [
-    0xC0000200, 0xC2000503, 0xC4000806, 0xC6000B09, 0xC8000E0C, 0xCA001110, 0xCC001413, 0xCE001716,
-    0xD0001A18, 0xD2001D1B, 0xD400201E, 0xD6002221, 0xD8002524, 0xDA002726, 0xDC002A29, 0xDE002C2B,
-    0xE0002E2D, 0xE200302F, 0xE4003231, 0xE6003433, 0xE8003635, 0xEA003837, 0xEC003938, 0xEE003B3A,
-    0xF0003C3B, 0xF2003D3C, 0xF4003E3D, 0xF6003E3E, 0xF8003F3F, 0xFA003F3F, 0xFC003F3F, 0xFE003F3F,
+    0xC0000200, 0xC2000503, 0xC4000806, 0xC6000B09, 0xC8000E0C, 0xCA001110, 0xCC001413, 0xCE001716, 0xD0001A18, 0xD2001D1B, 0xD400201E,
+    0xD6002221, 0xD8002524, 0xDA002726, 0xDC002A29, 0xDE002C2B, 0xE0002E2D, 0xE200302F, 0xE4003231, 0xE6003433, 0xE8003635, 0xEA003837,
+    0xEC003938, 0xEE003B3A, 0xF0003C3B, 0xF2003D3C, 0xF4003E3D, 0xF6003E3E, 0xF8003F3F, 0xFA003F3F, 0xFC003F3F, 0xFE003F3F,
 ];
 
 pub const GCONF: u8 = global_a7(15);

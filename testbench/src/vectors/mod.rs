@@ -50,10 +50,7 @@ impl Unit {
     /// model as its RTL module: the SPI slave, the ramp/pulse generator, the microstep LUT unit
     /// and the driver-chain master have it; the chip has pin-level vectors only.
     pub fn has(self, f: Form) -> bool {
-        matches!(
-            (self, f),
-            (Unit::Spi | Unit::Ramp | Unit::Lut | Unit::Chain, _) | (Unit::Chip, Form::Pins)
-        )
+        matches!((self, f), (Unit::Spi | Unit::Ramp | Unit::Lut | Unit::Chain, _) | (Unit::Chip, Form::Pins))
     }
 }
 
@@ -66,10 +63,7 @@ impl fmt::Display for Unit {
 impl FromStr for Unit {
     type Err = String;
     fn from_str(s: &str) -> Result<Unit, String> {
-        Unit::ALL
-            .into_iter()
-            .find(|u| u.name() == s)
-            .ok_or_else(|| format!("unknown unit '{s}': expected spi, ramp, lut, chain or chip"))
+        Unit::ALL.into_iter().find(|u| u.name() == s).ok_or_else(|| format!("unknown unit '{s}': expected spi, ramp, lut, chain or chip"))
     }
 }
 
@@ -128,10 +122,7 @@ pub fn stem(dir: &Path, unit: Unit, sc: &Scenario) -> PathBuf {
 pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<Vec<PathBuf>, String> {
     if unit == Unit::Lut {
         if sc.name != "tables" {
-            return Err(format!(
-                "unit lut: the microstep unit's vectors are complete tables: use --scenario tables, not '{}'",
-                sc.name
-            ));
+            return Err(format!("unit lut: the microstep unit's vectors are complete tables: use --scenario tables, not '{}'", sc.name));
         }
         let st = stem(dir, unit, sc);
         let mut all = Vec::new();
@@ -154,12 +145,7 @@ pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<V
 /// chip's pins, and the transaction-level CSV of the SPI frames, the ramp ticks and the
 /// driver-chain datagrams.
 pub fn scenario_set() -> Vec<(Unit, Vec<Form>)> {
-    vec![
-        (Unit::Chip, vec![Form::Pins]),
-        (Unit::Spi, vec![Form::Csv]),
-        (Unit::Ramp, vec![Form::Csv]),
-        (Unit::Chain, vec![Form::Csv]),
-    ]
+    vec![(Unit::Chip, vec![Form::Pins]), (Unit::Spi, vec![Form::Csv]), (Unit::Ramp, vec![Form::Csv]), (Unit::Chain, vec![Form::Csv])]
 }
 
 /// Runs `sc` once on the golden model and writes the vectors of several units (not `lut`,
@@ -205,19 +191,7 @@ fn meta(unit: Unit, sc: &Scenario) -> Meta {
     let mut notes = sc.notes.clone();
     notes.push("line 0 is the reset edge (rst = 1); line k is the k-th CLK edge after it".into());
     if unit == Unit::Chip && !record::RTL_PENDING_PINS.is_empty() {
-        notes.push(format!(
-            "not_compared: pins the reference RTL does not drive yet ({})",
-            record::RTL_PENDING_PINS.join(", ")
-        ));
+        notes.push(format!("not_compared: pins the reference RTL does not drive yet ({})", record::RTL_PENDING_PINS.join(", ")));
     }
-    Meta {
-        unit: unit.name(),
-        chip: sc.chip,
-        fclk: sc.fclk,
-        scenario: sc.name.clone(),
-        seed: sc.seed,
-        cycles: 0,
-        replay: "ready",
-        notes,
-    }
+    Meta { unit: unit.name(), chip: sc.chip, fclk: sc.fclk, scenario: sc.name.clone(), seed: sc.seed, cycles: 0, replay: "ready", notes }
 }

@@ -64,9 +64,28 @@ pub fn chip_layout() -> Layout {
 
 fn pin_values(rst: bool, i: &Inputs, o: &Outputs) -> [u64; 22] {
     [
-        rst, i.nscs_c, i.sck_c, i.sdi_c, i.sdi_s, i.ref1, i.ref2, i.ref3, i.refr1, i.refr2, i.refr3,
-        o.nint_sdo_c, o.sdoz_c, o.sdoz_c_oe, o.nscs_s, o.sck_s, o.sdo_s, o.sdi_s_o, o.sdi_s_oe, o.nscs2,
-        o.nscs3, o.poscmp,
+        rst,
+        i.nscs_c,
+        i.sck_c,
+        i.sdi_c,
+        i.sdi_s,
+        i.ref1,
+        i.ref2,
+        i.ref3,
+        i.refr1,
+        i.refr2,
+        i.refr3,
+        o.nint_sdo_c,
+        o.sdoz_c,
+        o.sdoz_c_oe,
+        o.nscs_s,
+        o.sck_s,
+        o.sdo_s,
+        o.sdi_s_o,
+        o.sdi_s_oe,
+        o.nscs2,
+        o.nscs3,
+        o.poscmp,
     ]
     .map(|b| b as u64)
 }
@@ -233,7 +252,17 @@ impl ChainPins {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn line(&mut self, rst: bool, i: &chain::ChainInputs, nx: &chain::ChainInputs, ram_q: u8, clk2_div_w: Option<u8>, new: &chain::Chain, d: &chain::Chain, readback: u64) -> Result<(), String> {
+    fn line(
+        &mut self,
+        rst: bool,
+        i: &chain::ChainInputs,
+        nx: &chain::ChainInputs,
+        ram_q: u8,
+        clk2_div_w: Option<u8>,
+        new: &chain::Chain,
+        d: &chain::Chain,
+        readback: u64,
+    ) -> Result<(), String> {
         let rd = if i.run && i.spi_mode { chain::ram_read(new, ram_q) } else { None };
         let abort = i.run && !i.spi_mode && (new.state != chain::IDLE || new.cs || new.req || new.stepped != 0);
         let take = d.state == chain::SETUP && new.state != chain::SETUP;
@@ -540,13 +569,7 @@ pub const SPI_CSV_HEADER: &str = "start_cycle,end_cycle,nbits,sent,received,kind
 impl SpiCsv {
     pub fn create(path: &std::path::Path, chip: Chip) -> Result<SpiCsv, String> {
         let t = Tmc429::new(chip);
-        Ok(SpiCsv {
-            csv: Csv::create(path, SPI_CSV_HEADER)?,
-            chip,
-            prev_in: Inputs::default(),
-            prev_out: t.outputs(),
-            frame: None,
-        })
+        Ok(SpiCsv { csv: Csv::create(path, SPI_CSV_HEADER)?, chip, prev_in: Inputs::default(), prev_out: t.outputs(), frame: None })
     }
 
     fn row(&mut self, start: u64, end: u64, sent: u64, recv: u64, n: u32) -> Result<(), String> {

@@ -385,8 +385,7 @@ pub const SCK_HALF: u32 = 3;
 pub fn from_file(path: &Path, chip: Chip, fclk: u64, sck_half: u32) -> Result<Scenario, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
     let name = path.display().to_string();
-    let lines = script::parse(&text, &name)
-        .map_err(|errs| errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n"))?;
+    let lines = script::parse(&text, &name).map_err(|errs| errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n"))?;
     let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "script".into());
     Ok(Scenario {
         name: stem,
@@ -402,13 +401,9 @@ impl Scenario {
     /// The pin levels, one [`Inputs`] per CLK cycle.
     pub fn inputs(&self) -> Box<dyn Iterator<Item = Inputs> + '_> {
         match &self.source {
-            Source::Script { lines, sck_half } => Box::new(ScriptInputs {
-                lines: lines.iter(),
-                pins: Inputs::default(),
-                half: *sck_half,
-                buf: VecDeque::new(),
-                wait: 0,
-            }),
+            Source::Script { lines, sck_half } => {
+                Box::new(ScriptInputs { lines: lines.iter(), pins: Inputs::default(), half: *sck_half, buf: VecDeque::new(), wait: 0 })
+            }
             Source::Random { cycles, profile } => {
                 let mut stim = Stimulus::new(self.chip, *profile, self.seed);
                 let mut drv = Driver::default();
@@ -522,7 +517,10 @@ mod tests {
         let (a, b) = (dir.join("script"), dir.join("recorded"));
         for (d, s) in [(&a, &sc), (&b, &rec)] {
             std::fs::create_dir_all(d).unwrap();
-            let set = [(crate::vectors::Unit::Chip, vec![crate::vectors::Form::Pins]), (crate::vectors::Unit::Spi, vec![crate::vectors::Form::Csv])];
+            let set = [
+                (crate::vectors::Unit::Chip, vec![crate::vectors::Form::Pins]),
+                (crate::vectors::Unit::Spi, vec![crate::vectors::Form::Csv]),
+            ];
             let files = crate::vectors::export_units(s, &set, d).unwrap();
             assert_eq!(files.len(), 4);
         }
