@@ -68,6 +68,25 @@ pub struct Outputs {
     pub poscmp: bool,
 }
 
+impl Outputs {
+    /// The levels with nothing selected: nINT inactive (high), SDOZ_C and SDI_S not driven,
+    /// the chip selects inactive, SCK_S high, SDO_S and POSCMP low; a chip's power-on pins start
+    /// from these (`Tmc429::new` then applies its variant's driver pins and pos_comp).
+    pub const IDLE: Outputs = Outputs {
+        nint_sdo_c: true,
+        sdoz_c: false,
+        sdoz_c_oe: false,
+        nscs_s: true,
+        sck_s: true,
+        sdo_s: false,
+        sdi_s_o: false,
+        sdi_s_oe: false,
+        nscs2: true,
+        nscs3: true,
+        poscmp: false,
+    };
+}
+
 /// Per-motor internal state exposed for comparison and tracing (ARCHITECTURE.md, probes).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

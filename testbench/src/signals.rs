@@ -264,19 +264,7 @@ mod tests {
 
     #[test]
     fn tristate_compared_only_when_enabled() {
-        let o = Outputs {
-            nint_sdo_c: true,
-            sdoz_c: false,
-            sdoz_c_oe: false,
-            nscs_s: true,
-            sck_s: true,
-            sdo_s: false,
-            sdi_s_o: false,
-            sdi_s_oe: false,
-            nscs2: true,
-            nscs3: true,
-            poscmp: false,
-        };
+        let o = Outputs::IDLE;
         let p = Probes::default();
         let mut o2 = o;
         o2.sdoz_c = true;
@@ -296,22 +284,7 @@ mod tests {
     fn signed_values_are_masked_and_formatted() {
         let mut p = Probes::default();
         p.motor[1].v_internal = -256;
-        let v = flatten(
-            &Outputs {
-                nint_sdo_c: true,
-                sdoz_c: false,
-                sdoz_c_oe: false,
-                nscs_s: true,
-                sck_s: true,
-                sdo_s: false,
-                sdi_s_o: false,
-                sdi_s_oe: false,
-                nscs2: true,
-                nscs3: true,
-                poscmp: false,
-            },
-            &p,
-        );
+        let v = flatten(&Outputs::IDLE, &p);
         let i = index_of("motor1.v_internal").unwrap();
         assert_eq!(v[i], 0xFFF00);
         assert_eq!(format_value(&SIGNALS[i], v[i]), "0xfff00 (-256)");
