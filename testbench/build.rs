@@ -6,12 +6,12 @@
 //! of the runs that write Verilator's VCD. Without `--trace` Verilator keeps the intermediate
 //! signals in locals instead of the traced model state, which makes the cycle about 10 % faster
 //! (docs/performance.md). The generated C++ and Verilator's runtime are compiled with clang++ at
-//! -O2 when there is one (`clang++`, `clang++-N`; `TMC429_VL_CXX` names another compiler): for the
-//! one large straight-line function Verilator makes of this design, its code runs about 25 %
-//! faster than GCC's best (-O1; GCC's -O2 is slower still), which is what brings the lock-step
-//! pair to its 3 M cycles/s. Without clang the models are compiled with the default C++ compiler
-//! at -O1 and a cargo warning says so. The bridge (cpp/rtl_bridge.cc) is compiled with cxx-build
-//! at -O2; all of it also in debug builds.
+//! -O2 when there is one (`clang++`, `clang++-N`): for the one large straight-line function
+//! Verilator makes of this design, its code runs about 25 % faster than GCC's best (-O1; GCC's
+//! -O2 is slower still), which is what brings the lock-step pair to its 3 M cycles/s. Without
+//! clang the models are compiled with the default C++ compiler at -O1 and a cargo warning says
+//! so. `TMC429_VL_CXX` names the compiler instead (at -O2 if it is a clang, else at -O1). The
+//! bridge (cpp/rtl_bridge.cc) is compiled with cxx-build at -O2; all of it also in debug builds.
 //!
 //! Without Verilator (`verilator` not on PATH, or `VERILATOR` naming a program that does not
 //! run) the crate builds without the RTL: a cargo warning says so and the cfg `tmc429_no_rtl`
@@ -106,11 +106,11 @@ fn main() {
     // file), as objects of the bridge's library.
     let compiler = model_compiler();
     let mut models = cc::Build::new();
-    match &compiler {
-        ModelCompiler::Clang(cxx) | ModelCompiler::Named(cxx) => {
+    match &compiler.cxx {
+        Some(cxx) => {
             models.compiler(cxx);
         }
-        ModelCompiler::Default => {
+        None => {
             println!(
                 "cargo:warning=clang++ not found: the Verilated RTL is compiled with the default C++ compiler at -O1, \
                  about 20 % slower than with clang++ -O2 (scripts/setup installs clang; TMC429_VL_CXX names a compiler)"
@@ -129,7 +129,7 @@ fn main() {
         .include(inc)
         .include(inc.join("vltstd"))
         .std("c++17")
-        .opt_level(if matches!(compiler, ModelCompiler::Default) { 1 } else { 2 })
+        .opt_level(if compiler.clang { 2 } else { 1 })
         .debug(false)
         .warnings(false)
         .flag_if_supported("-faligned-new")
@@ -158,35 +158,41 @@ fn main() {
     build.define("TMC429_VL_TRIGRPREV", if falling_edge_flag { "1" } else { "0" });
     build.compile("tmc429_vrtl");
     println!("cargo:rustc-link-lib=pthread");
-    if !matches!(compiler, ModelCompiler::Default) {
+    if compiler.clang {
         // clang calls libatomic where GCC inlines (Verilator's runtime: `__atomic_is_lock_free`)
         println!("cargo:rustc-link-lib=atomic");
     }
 }
 
 /// The C++ compiler of the Verilated models.
-enum ModelCompiler {
-    /// `TMC429_VL_CXX`, compiled at -O2
-    Named(String),
-    /// the first clang++ on PATH, at -O2
-    Clang(String),
-    /// none found: the cc crate's default (`CXX`, else c++), at -O1
-    Default,
+struct ModelCompiler {
+    /// the program; `None`: the cc crate's default (`CXX`, else c++)
+    cxx: Option<String>,
+    /// whether it is clang (compiled at -O2 and linked with libatomic; any other at -O1)
+    clang: bool,
 }
 
-/// `TMC429_VL_CXX` if set, else the first of `clang++`, `clang++-20` … `clang++-14` that runs.
+/// `TMC429_VL_CXX` if set, else the first of `clang++`, `clang++-20` … `clang++-14` that runs,
+/// else the default.
 fn model_compiler() -> ModelCompiler {
     println!("cargo:rerun-if-env-changed=TMC429_VL_CXX");
     if let Ok(cxx) = env::var("TMC429_VL_CXX") {
-        return ModelCompiler::Named(cxx);
+        let version = Command::new(&cxx)
+            .arg("--version")
+            .output()
+            .ok()
+            .filter(|o| o.status.success())
+            .unwrap_or_else(|| panic!("TMC429_VL_CXX names `{cxx}`, which does not run (`{cxx} --version`)"));
+        let clang = String::from_utf8_lossy(&version.stdout).contains("clang");
+        return ModelCompiler { cxx: Some(cxx), clang };
     }
     let names = std::iter::once("clang++".to_string()).chain((14..=20).rev().map(|v| format!("clang++-{v}")));
     for name in names {
         if runs(&name) {
-            return ModelCompiler::Clang(name);
+            return ModelCompiler { cxx: Some(name), clang: true };
         }
     }
-    ModelCompiler::Default
+    ModelCompiler { cxx: None, clang: false }
 }
 
 /// Whether `program --version` runs.
