@@ -306,23 +306,21 @@ fn drain_all(h: u64) -> Vec<tmc429_event_t> {
 /// counter), 341 · 32 = 10912 CLK at ramp_div 0.
 #[test]
 fn chain_events_through_the_queue() {
-    unsafe {
-        let h = create(TMC429_CHIP_TMC429, 0);
-        // $7E: cont_update = 1, clk2_div = 15, LSMD = 2 (three motors)
-        dg(h, 0x7E01_0F02);
-        tmc429_advance_cycles(h, 40_000);
-        let ev = drain_all(h);
-        assert!(ev.len() >= 3, "{} events", ev.len());
-        for e in &ev {
-            assert_eq!(e.kind, TMC429_EVENT_CHAIN);
-            assert_eq!((e.nbits, e.bits), (36, 0x8_7F87_F87F));
-        }
-        assert_eq!(ev[1].cycle - ev[0].cycle, 10912);
-        assert_eq!(ev[2].cycle - ev[1].cycle, 10912);
-        let line = format_event(&ev[0]);
-        assert_eq!(line, format!("chain {} 36 87F87F87F", ev[0].cycle));
-        tmc429_destroy(h);
+    let h = create(TMC429_CHIP_TMC429, 0);
+    // $7E: cont_update = 1, clk2_div = 15, LSMD = 2 (three motors)
+    dg(h, 0x7E01_0F02);
+    tmc429_advance_cycles(h, 40_000);
+    let ev = drain_all(h);
+    assert!(ev.len() >= 3, "{} events", ev.len());
+    for e in &ev {
+        assert_eq!(e.kind, TMC429_EVENT_CHAIN);
+        assert_eq!((e.nbits, e.bits), (36, 0x8_7F87_F87F));
     }
+    assert_eq!(ev[1].cycle - ev[0].cycle, 10912);
+    assert_eq!(ev[2].cycle - ev[1].cycle, 10912);
+    let line = format_event(&ev[0]);
+    assert_eq!(line, format!("chain {} 36 87F87F87F", ev[0].cycle));
+    tmc429_destroy(h);
 }
 
 /// Step events through the C queue: in Step/Dir mode (if_configuration en_sd, TMC429 §8.2.4) a
