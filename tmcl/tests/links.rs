@@ -261,3 +261,42 @@ fn server_survives_garbage_and_floods() {
     assert_eq!(ask(&mut g3, frame([1, 10, 42, 2, 0, 0, 0, 0])), frame([2, 1, 100, 10, 0, 0, 0, 7]));
     srv.shutdown();
 }
+
+/// Reads from `s` until `want` has arrived (or the read timeout fails the test); returns all bytes read.
+fn read_until(s: &mut std::net::TcpStream, want: &[u8]) -> Vec<u8> {
+    let mut got = Vec::new();
+    let mut b = [0u8; 64];
+    while !got.ends_with(want) {
+        let n = s.read(&mut b).expect("reply within the read timeout");
+        assert!(n > 0, "connection closed after {:?}", String::from_utf8_lossy(&got));
+        got.extend_from_slice(&b[..n]);
+    }
+    got
+}
+
+/// The ASCII interface (manual §4.4) over the TCP link: command 139 switches that connection to
+/// ASCII mode, command lines are echoed character by character (echo mode 00, global parameter
+/// 67 = 0) and answered `BA <status> <value>` CR; another connection stays binary; BIN returns.
+#[test]
+fn ascii_mode_over_tcp() {
+    let srv =
+        Server::start(module(), &Options { tcp: Some("127.0.0.1:0".into()), pty: false, time_scale: 1.0, frame_timeout_ms: 50 }).unwrap();
+    let addr = srv.tcp_addr.unwrap();
+    let mut a = connect(addr);
+    assert_eq!(ask(&mut a, frame([1, 139, 0, 0, 0, 0, 0, 0])), frame([2, 1, 100, 139, 0, 0, 0, 0]));
+    a.write_all(b"AGAP 4, 0\r").unwrap();
+    assert_eq!(read_until(&mut a, b"BA 100 1000\r"), b"AGAP 4, 0\rBA 100 1000\r");
+    a.write_all(b"ASAP 4, 1, 1234\r").unwrap();
+    assert_eq!(read_until(&mut a, b"BA 100 1234\r"), b"ASAP 4, 1, 1234\rBA 100 1234\r");
+    // A second connection is binary and sees the same module.
+    let mut b = connect(addr);
+    assert_eq!(ask(&mut b, frame([1, 6, 4, 1, 0, 0, 0, 0])), frame([2, 1, 100, 6, 0, 0, 0x04, 0xd2]));
+    // Unknown command: status 2.
+    a.write_all(b"AFOO\r").unwrap();
+    assert_eq!(read_until(&mut a, b"BA 2 0\r"), b"AFOO\rBA 2 0\r");
+    // BIN: back to binary frames.
+    a.write_all(b"ABIN\r").unwrap();
+    assert_eq!(read_until(&mut a, b"BA 100 0\r"), b"ABIN\rBA 100 0\r");
+    assert_eq!(ask(&mut a, frame([1, 6, 4, 0, 0, 0, 0, 0])), frame([2, 1, 100, 6, 0, 0, 0x03, 0xe8]));
+    srv.shutdown();
+}
