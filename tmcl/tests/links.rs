@@ -199,6 +199,14 @@ fn eeprom_persistence_and_corruption() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A server of a fresh module on a free TCP port of 127.0.0.1 (no pty), real time, 50 ms frame timeout.
+fn tcp_server() -> (Server, std::net::SocketAddr) {
+    let srv =
+        Server::start(module(), &Options { tcp: Some("127.0.0.1:0".into()), pty: false, time_scale: 1.0, frame_timeout_ms: 50 }).unwrap();
+    let addr = srv.tcp_addr.unwrap();
+    (srv, addr)
+}
+
 fn connect(addr: std::net::SocketAddr) -> std::net::TcpStream {
     let s = std::net::TcpStream::connect(addr).unwrap();
     s.set_read_timeout(Some(Duration::from_secs(5))).unwrap();
@@ -214,9 +222,7 @@ fn ask(s: &mut std::net::TcpStream, f: [u8; 9]) -> [u8; 9] {
 
 #[test]
 fn server_survives_garbage_and_floods() {
-    let srv =
-        Server::start(module(), &Options { tcp: Some("127.0.0.1:0".into()), pty: false, time_scale: 1.0, frame_timeout_ms: 50 }).unwrap();
-    let addr = srv.tcp_addr.unwrap();
+    let (srv, addr) = tcp_server();
     let mut good = connect(addr);
     assert_eq!(ask(&mut good, frame([1, 5, 4, 0, 0, 0, 0x04, 0xb0])), frame([2, 1, 100, 5, 0, 0, 0x04, 0xb0]));
     assert_eq!(ask(&mut good, frame([1, 9, 42, 2, 0, 0, 0, 7])), frame([2, 1, 100, 9, 0, 0, 0, 7]));
@@ -262,16 +268,19 @@ fn server_survives_garbage_and_floods() {
     srv.shutdown();
 }
 
-/// Reads from `s` until `want` has arrived (or the read timeout fails the test); returns all bytes read.
-fn read_until(s: &mut std::net::TcpStream, want: &[u8]) -> Vec<u8> {
+/// Sends the ASCII command `line` (CR appended) on `s` and checks what comes back: the line's
+/// echo (echo mode 00), then `reply` and CR.
+fn ascii(s: &mut std::net::TcpStream, line: &str, reply: &str) {
+    s.write_all(format!("{line}\r").as_bytes()).unwrap();
+    let want = format!("{line}\r{reply}\r");
     let mut got = Vec::new();
     let mut b = [0u8; 64];
-    while !got.ends_with(want) {
+    while got.len() < want.len() {
         let n = s.read(&mut b).expect("reply within the read timeout");
         assert!(n > 0, "connection closed after {:?}", String::from_utf8_lossy(&got));
         got.extend_from_slice(&b[..n]);
     }
-    got
+    assert_eq!(String::from_utf8_lossy(&got), want);
 }
 
 /// The ASCII interface (manual §4.4) over the TCP link: command 139 switches that connection to
@@ -279,24 +288,17 @@ fn read_until(s: &mut std::net::TcpStream, want: &[u8]) -> Vec<u8> {
 /// 67 = 0) and answered `BA <status> <value>` CR; another connection stays binary; BIN returns.
 #[test]
 fn ascii_mode_over_tcp() {
-    let srv =
-        Server::start(module(), &Options { tcp: Some("127.0.0.1:0".into()), pty: false, time_scale: 1.0, frame_timeout_ms: 50 }).unwrap();
-    let addr = srv.tcp_addr.unwrap();
+    let (srv, addr) = tcp_server();
     let mut a = connect(addr);
     assert_eq!(ask(&mut a, frame([1, 139, 0, 0, 0, 0, 0, 0])), frame([2, 1, 100, 139, 0, 0, 0, 0]));
-    a.write_all(b"AGAP 4, 0\r").unwrap();
-    assert_eq!(read_until(&mut a, b"BA 100 1000\r"), b"AGAP 4, 0\rBA 100 1000\r");
-    a.write_all(b"ASAP 4, 1, 1234\r").unwrap();
-    assert_eq!(read_until(&mut a, b"BA 100 1234\r"), b"ASAP 4, 1, 1234\rBA 100 1234\r");
+    ascii(&mut a, "AGAP 4, 0", "BA 100 1000");
+    ascii(&mut a, "ASAP 4, 1, 1234", "BA 100 1234");
     // A second connection is binary and sees the same module.
     let mut b = connect(addr);
     assert_eq!(ask(&mut b, frame([1, 6, 4, 1, 0, 0, 0, 0])), frame([2, 1, 100, 6, 0, 0, 0x04, 0xd2]));
-    // Unknown command: status 2.
-    a.write_all(b"AFOO\r").unwrap();
-    assert_eq!(read_until(&mut a, b"BA 2 0\r"), b"AFOO\rBA 2 0\r");
-    // BIN: back to binary frames.
-    a.write_all(b"ABIN\r").unwrap();
-    assert_eq!(read_until(&mut a, b"BA 100 0\r"), b"ABIN\rBA 100 0\r");
+    // Unknown command: status 2; BIN: back to binary frames.
+    ascii(&mut a, "AFOO", "BA 2 0");
+    ascii(&mut a, "ABIN", "BA 100 0");
     assert_eq!(ask(&mut a, frame([1, 6, 4, 0, 0, 0, 0, 0])), frame([2, 1, 100, 6, 0, 0, 0x03, 0xe8]));
     srv.shutdown();
 }
