@@ -177,13 +177,8 @@ struct ModelCompiler {
 fn model_compiler() -> ModelCompiler {
     println!("cargo:rerun-if-env-changed=TMC429_VL_CXX");
     if let Ok(cxx) = env::var("TMC429_VL_CXX") {
-        let version = Command::new(&cxx)
-            .arg("--version")
-            .output()
-            .ok()
-            .filter(|o| o.status.success())
-            .unwrap_or_else(|| panic!("TMC429_VL_CXX names `{cxx}`, which does not run (`{cxx} --version`)"));
-        let clang = String::from_utf8_lossy(&version.stdout).contains("clang");
+        let version = version(&cxx).unwrap_or_else(|| panic!("TMC429_VL_CXX names `{cxx}`, which does not run (`{cxx} --version`)"));
+        let clang = version.contains("clang");
         return ModelCompiler { cxx: Some(cxx), clang };
     }
     let names = std::iter::once("clang++".to_string()).chain((14..=20).rev().map(|v| format!("clang++-{v}")));
@@ -197,12 +192,13 @@ fn model_compiler() -> ModelCompiler {
 
 /// Whether `program --version` runs.
 fn runs(program: &str) -> bool {
-    Command::new(program)
-        .arg("--version")
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .status()
-        .is_ok_and(|s| s.success())
+    version(program).is_some()
+}
+
+/// What `program --version` prints, if it runs.
+fn version(program: &str) -> Option<String> {
+    let o = Command::new(program).arg("--version").stderr(std::process::Stdio::null()).output().ok()?;
+    o.status.success().then(|| String::from_utf8_lossy(&o.stdout).into_owned())
 }
 
 /// A build without the RTL: the warning, the cfg, and a rerun when a program appears on PATH
