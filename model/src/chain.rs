@@ -13,12 +13,14 @@
 //! RTL's synchronous RAM read port needs no write forwarding, and the RTL has two more edges to
 //! scale the LUT value and form the bit).
 //! ```text
-//! IDLE ──request──► SETUP (CS active, SCK high, P edges)
+//! IDLE ──request──► SETUP (CS active, SCK high, HI edges: t_HDSCSdrv)
 //!   ► LOW (bit on SDO_S, SCK low, LO edges) ► HIGH (SCK high, SDI_S sampled at its first edge,
 //!     HI edges) ► next bit, or GAP (NxM with motor < LSMD, G edges) ► next bit,
-//!     or HOLD (NxM with motor = LSMD, CS active, P edges)
-//!   ► CSOFF (CS inactive, P edges) ► next datagram or IDLE
+//!     or HOLD (NxM with motor = LSMD, CS active, SCK high, HI edges)
+//!   ► CSOFF (CS inactive, SDO_S high, P edges: twice t_SUSCSdrv) ► next datagram or IDLE
 //! ```
+//! A datagram of n bits thus lasts (n + 2)·P plus its gaps, the sum of TMC429 Table 11.2
+//! (8 + 8 + 1·16 + 8 + 8 = 48 CLK for one bit at clk2_div 7, C82).
 
 use crate::current::CurrentScale;
 use crate::microstep::{self, Polarity};
@@ -79,6 +81,9 @@ pub struct ChainInputs {
     pub cont_update: bool,
     pub cw: bool,
     pub dgw: bool,
+    /// A µC write of datagram_low_word or datagram_high_word executes in this edge: the
+    /// readback register is cleared (C87).
+    pub readback_clr: bool,
     pub cover_pos: u8,
     pub cover_len: u8,
     pub cover_datagram: u32,
@@ -138,7 +143,8 @@ pub struct Chain {
     pub cov_data: u32,
     /// Ramp ticks per motor for continuous update (mod 1024, C83).
     pub cupd: [u16; 3],
-    /// Chip select active (before polarity), SCK_S level (before polarity), SDO_S level.
+    /// Chip select active (before polarity), SCK_S level (before polarity), SDO_S level (high
+    /// from reset and whenever the chip select is inactive, C2, C81).
     pub cs: bool,
     pub sck: bool,
     pub sdo: bool,
@@ -176,7 +182,7 @@ impl Chain {
             cupd: CUPD_RESET,
             cs: false,
             sck: true,
-            sdo: false,
+            sdo: true,
         }
     }
 
@@ -245,13 +251,14 @@ impl Chain {
                 self.cnt = timing(g.g(f::CLK2_DIV)).1;
             }
             HIGH => {
-                let (_, _, p, gap) = timing(g.g(f::CLK2_DIV));
+                let (_, hi, _, gap) = timing(g.g(f::CLK2_DIV));
                 if self.nxm {
                     // NxM (C86): LSMD 3 acts as 2.
                     let lsmd = (g.g(f::LSMD) as u8).min(2);
                     if self.motor >= lsmd {
+                        // t_HDSCSdrv after the last bit (C82).
                         self.state = HOLD;
-                        self.cnt = p;
+                        self.cnt = hi;
                     } else {
                         self.motor += 1;
                         self.cell = (self.cell + 1) & 63;
@@ -264,8 +271,10 @@ impl Chain {
                 }
             }
             HOLD => {
-                // End of the datagram: CS inactive, CDGW handshake done (C87, C88).
+                // End of the datagram: CS inactive, SDO_S back high (C81), CDGW handshake
+                // done (C87, C88).
                 self.cs = false;
+                self.sdo = true;
                 self.cover_busy = false;
                 self.dgw_busy = false;
                 self.state = CSOFF;
@@ -350,8 +359,9 @@ impl Chain {
         self.bits = 0;
         self.cs = true;
         self.sck = true;
+        // t_HDSCSdrv: the chip select leads the first falling SCK_S edge by HI (C82).
         self.state = SETUP;
-        self.cnt = timing(g.g(f::CLK2_DIV)).2;
+        self.cnt = timing(g.g(f::CLK2_DIV)).1;
     }
 
     /// Falling SCK_S: the bit of the current cell goes out on SDO_S (C84, C85), from the cells

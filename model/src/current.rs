@@ -24,7 +24,8 @@ pub struct CurrentScale {
 impl CurrentScale {
     /// The motor's ramp tick (contract C40), from the motor's old state (C75, C77): moving
     /// (V ≠ 0) selects is_agtat or is_aleat by |a_actual| against a_threshold and clears the
-    /// counter; at rest the counter counts ramp ticks and selects is_v0 at the 255th. Between
+    /// counter; at rest the counter counts ramp ticks and from the 255th on selects is_v0 if
+    /// is_agtat and is_aleat are both > 0 (TMC429 §8.1.9 footnote *2), else is_aleat. Between
     /// ramp ticks the selection holds (the current scale is a function of the ramp clock).
     #[inline]
     pub fn ramp_tick(&mut self, m: &Motor) {
@@ -38,10 +39,30 @@ impl CurrentScale {
                 self.v0_count += 1;
             }
             if self.v0_count == V0_DELAY_TICKS {
-                self.sel = SEL_V0;
+                // "For selection of current scaling IS_V0 (at rest) IS_AGTAT and IS_ALEAT must
+                // be larger than 0" (TMC429 §8.1.9 *2): otherwise the nominal current is_aleat.
+                self.sel = Self::rest_selection(m);
             }
             // During the delay the previous selection is kept (C75).
         }
+    }
+
+    /// The selection at rest once the delay is over: is_v0 if is_agtat and is_aleat are both
+    /// > 0 (TMC429 §8.1.9 footnote *2), else is_aleat (C75).
+    #[inline]
+    pub fn rest_selection(m: &Motor) -> u8 {
+        if m.is_agtat != 0 && m.is_aleat != 0 {
+            SEL_V0
+        } else {
+            SEL_ALEAT
+        }
+    }
+
+    /// A ramp tick of the motor would change nothing: at rest, the delay over and the rest
+    /// selection in place (the fast path of `Tmc429::tick` skips such ticks).
+    #[inline]
+    pub fn tick_changes_nothing(&self, m: &Motor) -> bool {
+        m.v == 0 && self.v0_count == V0_DELAY_TICKS && self.sel == Self::rest_selection(m)
     }
 
     /// i_scale of the motor's registers for the current selection.

@@ -69,19 +69,25 @@ impl EventDecoder {
     }
 
     /// Decodes the edge just made (`cycle` = index of that edge) from the chip and its outputs.
+    #[inline]
     pub fn observe(&mut self, chip: &Tmc429, out: &Outputs, cycle: u64, sink: &mut impl FnMut(Event)) {
         let int = chip.int();
         if int != self.int {
             self.int = int;
             sink(Event::Int { cycle, level: int });
         }
-        let g = chip.global();
-        let step_dir = match chip.chip() {
-            Chip::Tmc428 => false,
-            Chip::Tmc429 => g.ifc(f::EN_SD),
-            Chip::Tmc4210 => g.ifc(f::EN_SD),
-        };
+        let step_dir = chip.chip() != Chip::Tmc428 && chip.global().ifc(f::EN_SD);
         let mode_changed = step_dir != self.step_dir_prev;
+        if !mode_changed && self.prev.as_ref() == Some(out) {
+            // No pin changed: no step, no chain bit, no chip-select edge.
+            return;
+        }
+        self.pins_changed(chip, out, cycle, step_dir, mode_changed, sink);
+    }
+
+    /// The part of [`EventDecoder::observe`] for an edge that changed a pin or the mode.
+    fn pins_changed(&mut self, chip: &Tmc429, out: &Outputs, cycle: u64, step_dir: bool, mode_changed: bool, sink: &mut impl FnMut(Event)) {
+        let g = chip.global();
         self.step_dir_prev = step_dir;
         let prev = match self.prev.replace(*out) {
             Some(p) => p,

@@ -34,7 +34,11 @@ pub struct Host {
 
 impl Host {
     pub fn new(chip: Chip) -> Self {
-        let c = Tmc429::new(chip);
+        Self::from_chip(Tmc429::new(chip))
+    }
+
+    /// A host driving `c` (e.g. [`Tmc429::with_package`]).
+    pub fn from_chip(c: Tmc429) -> Self {
         let last_out = c.outputs();
         Host { chip: c, pins: Inputs::default(), sck_half: 4, last_out, observer: None, last_frame_end: 0 }
     }
@@ -137,11 +141,31 @@ impl Host {
 
     /// One SPI frame of `nbits` (1..=32) bits, MSB first: nSCS_C low, data set on falling SCK_C,
     /// sampled by the chip on rising SCK_C; the µC samples SDO_C just before each rising edge.
-    /// Returns the `nbits` bits received.
+    /// Returns the `nbits` bits received. The same as [`Host::select`], [`Host::shift`],
+    /// [`Host::deselect`].
     pub fn frame(&mut self, value: u32, nbits: u32) -> u32 {
-        let nbits = nbits.clamp(1, 32);
+        self.select();
+        let rx = self.shift(value, nbits);
+        self.deselect();
+        rx
+    }
+
+    /// nSCS_C falls (chip select under the caller's control, as byte-wise drivers hold it across
+    /// several transfers), then one SCK_C half period passes.
+    pub fn select(&mut self) {
         self.pins.nscs_c = false;
         self.hold();
+    }
+
+    /// Whether nSCS_C is low.
+    pub fn selected(&self) -> bool {
+        !self.pins.nscs_c
+    }
+
+    /// `nbits` (1..=32) SCK_C periods with nSCS_C as it is, MSB first; returns the bits received.
+    /// With nSCS_C high the chip ignores the clock and the bits read are nINT.
+    pub fn shift(&mut self, value: u32, nbits: u32) -> u32 {
+        let nbits = nbits.clamp(1, 32);
         let mut rx = 0u32;
         for i in (0..nbits).rev() {
             self.pins.sck_c = false;
@@ -151,10 +175,15 @@ impl Host {
             self.pins.sck_c = true;
             self.hold();
         }
+        rx
+    }
+
+    /// nSCS_C rises: the chip executes the frame if it was a whole 32-bit datagram (TMC429 §6.2,
+    /// contract C12); then one SCK_C half period passes.
+    pub fn deselect(&mut self) {
         self.pins.nscs_c = true;
         self.last_frame_end = self.chip.cycle();
         self.hold();
-        rx
     }
 
     /// A 32-bit datagram; returns the 32-bit reply.

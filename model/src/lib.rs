@@ -7,6 +7,7 @@
 pub mod chain;
 pub mod chip;
 pub mod current;
+mod drvpins;
 pub mod events;
 pub mod host;
 pub mod microstep;
@@ -14,16 +15,22 @@ pub mod motor;
 pub mod pins;
 pub mod pmulpdiv;
 pub mod ram;
+pub mod ramp;
+pub mod regfile;
 pub mod regmap;
 pub mod regmap_render;
+pub mod regmap_sigrok;
+pub mod regmap_verilog;
 pub mod script;
 pub mod spi_slave;
 pub mod stepdir;
 pub mod switches;
 pub mod sync;
+pub mod text;
 
-pub use chip::Chip;
-pub use pins::{ChainProbe, Inputs, MotorProbe, Outputs, Probes};
+pub use chip::{Chip, Package};
+pub use pins::{Bonding, ChainProbe, Inputs, MotorProbe, Outputs, Probes};
+pub use regfile::Global;
 
 use motor::*;
 use regmap::{f, Addr};
@@ -44,64 +51,13 @@ pub const PHASE_PULSE: u32 = 31;
 /// type_version of the TMC429 and TMC4210 (TMC429 §8.2.4.4).
 pub const TYPE_VERSION: u32 = 0x429101;
 
-/// Global registers and driver-chain state shared by the motors.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Global {
-    /// Global parameter register $7E, as stored (unused bits 0).
-    pub gconf: u32,
-    /// if_configuration (TMC429/TMC4210).
-    pub ifconf: u32,
-    pub pos_comp: u32,
-    /// pos_comp_int mask M and flag I.
-    pub pc_m: bool,
-    pub pc_i: bool,
-    /// History flop of the position match (C65).
-    pub pc_match_prev: bool,
-    pub cover_pos: u8,
-    pub cover_len: u8,
-    pub cover_datagram: u32,
-    /// Cover datagram waiting (cw).
-    pub cw: bool,
-    /// A datagram_low/high_word write waits for the next datagram (C-chain).
-    pub dgw: bool,
-    /// 48-bit readback shift register of SDI_S.
-    pub readback: u64,
-    /// Switch levels sampled through the 74HC157 when refmux = 1 (bit 2m = Rm, 2m+1 = Lm).
-    pub mux_switches: u8,
-}
-
-impl Global {
-    fn reset() -> Self {
-        Global {
-            gconf: f::CLK2_DIV.put(15),
-            ifconf: 0,
-            pos_comp: 0,
-            pc_m: false,
-            pc_i: false,
-            pc_match_prev: true,
-            cover_pos: 0,
-            cover_len: 0,
-            cover_datagram: 0,
-            cw: false,
-            dgw: false,
-            readback: 0,
-            mux_switches: 0,
-        }
-    }
-    #[inline]
-    pub fn g(&self, fl: regmap::Field) -> u32 {
-        fl.get(self.gconf)
-    }
-    #[inline]
-    pub fn ifc(&self, fl: regmap::Field) -> bool {
-        fl.get(self.ifconf) != 0
-    }
-}
-
 /// The chip.
 #[derive(Clone, Debug)]
 pub struct Tmc429 {
     chip: Chip,
+    package: Package,
+    /// The pins `package` lacks (C90): applied to the inputs before and the outputs after an edge.
+    bond: Bonding,
     cycle: u64,
     sync: SyncBank,
     spi: SpiSlave,
@@ -129,13 +85,28 @@ pub struct Tmc429 {
     /// Synchronized pins and multiplexed switches of the last full evaluation.
     quiet_pins: (u16, u8),
     fast_path: bool,
+    /// A register was written outside an edge ([`Tmc429::write_register`] called directly):
+    /// the next edge drives the driver-side pins from the state (as an executed datagram does).
+    pins_stale: bool,
 }
 
 impl Tmc429 {
-    /// A chip in its power-on state (C2).
+    /// A chip in its power-on state (C2), in the package with every pin of the variant.
     pub fn new(chip: Chip) -> Self {
+        Self::in_package(chip, Package::full(chip))
+    }
+
+    /// A chip in `package` in its power-on state (C2, C90); an error if the variant does not
+    /// come in that package.
+    pub fn with_package(chip: Chip, package: Package) -> Result<Self, String> {
+        Ok(Self::in_package(chip, package.check(chip)?))
+    }
+
+    fn in_package(chip: Chip, package: Package) -> Self {
         let mut t = Tmc429 {
             chip,
+            package,
+            bond: Bonding::of(chip, package),
             cycle: 0,
             sync: SyncBank::reset(),
             spi: SpiSlave::reset(),
@@ -147,24 +118,30 @@ impl Tmc429 {
             quiet: false,
             quiet_pins: (0, 0),
             fast_path: true,
+            pins_stale: false,
             out: Outputs::IDLE,
             chain: chain::Chain::reset(),
             cur: [current::CurrentScale::default(); 3],
             sd: stepdir::StepDir::reset(),
             run_edges: 0,
         };
-        t.out.poscmp = t.has_pos_comp();
+        t.out.poscmp = t.has_poscmp_pin();
         t.driver_pins(0);
+        t.bond.outputs(&mut t.out);
         t
     }
 
     /// Back to the power-on state (the RTL's synchronous `rst`).
     pub fn reset(&mut self) {
-        *self = Tmc429::new(self.chip);
+        *self = Tmc429::in_package(self.chip, self.package);
     }
 
     pub fn chip(&self) -> Chip {
         self.chip
+    }
+
+    pub fn package(&self) -> Package {
+        self.package
     }
 
     /// CLK edges since power-on.
@@ -192,6 +169,12 @@ impl Tmc429 {
 
     fn has_pos_comp(&self) -> bool {
         self.chip != Chip::Tmc428
+    }
+
+    /// The variant has the SDOZ_C and POSCMP pins (C90): the TMC429 (its SSOP16 package
+    /// excepted, [`Bonding`]); the TMC4210 has the registers, not the pins ([4210] §3.2).
+    fn has_poscmp_pin(&self) -> bool {
+        self.chip == Chip::Tmc429
     }
 
     /// Read-only view of a motor's registers and state.
@@ -226,6 +209,7 @@ impl Tmc429 {
     }
 
     /// INT (C64).
+    #[inline]
     pub fn int(&self) -> bool {
         self.motors.iter().any(|m| m.int_flags != 0) || (self.global.pc_i && self.global.pc_m)
     }
@@ -273,22 +257,19 @@ impl Tmc429 {
     }
 
     /// The inputs motor `m`'s ramp and pulse generator sees before the next edge: the levels of
-    /// the current state ([`motor::RampInputs`]). With [`motor::ramp_ports`] of the state after
+    /// the current state ([`ramp::RampInputs`]). With [`ramp::ramp_ports`] of the state after
     /// that edge this is the boundary of `rtl/tmc429_ramp.v` (test vectors, docs/vectors.md).
-    pub fn ramp_inputs(&self, m: usize) -> motor::RampInputs {
+    pub fn ramp_inputs(&self, m: usize) -> ramp::RampInputs {
         let mo = &self.motors[m];
         let phase = self.prescaler & 31;
         let frame = self.prescaler >> 5;
         let due = |div: u8| frame & ((1 << div) - 1) == (1 << div) - 1;
         let (left, right) = self.switches();
-        let p = self.spi.ports(&self.sync);
-        let a7 = ((p.cmd >> 25) & 0x7F) as u8;
-        let write = p.exec && (p.cmd >> 24) & 1 == 0;
-        let (we, widx) = match (regmap::lookup(self.chip, a7), Addr::from_a7(a7)) {
-            (Some(_), Addr::Motor(mm, idx)) if write && mm as usize == m => (true, idx),
-            _ => (false, 0),
+        let (we, widx, wdata) = match self.write_of_next_edge() {
+            Some((Addr::Motor(mm, idx), d)) if mm as usize == m => (true, idx, d),
+            _ => (false, 0, 0),
         };
-        motor::RampInputs {
+        ramp::RampInputs {
             run: !self.power_down,
             ramp_tick: phase == PHASE_RAMP && due(mo.ramp_div),
             pulse_tick: phase == PHASE_PULSE && due(mo.pulse_div),
@@ -303,9 +284,18 @@ impl Tmc429 {
             sw_l: (left >> m) & 1 != 0,
             sw_r: (right >> m) & 1 != 0,
             we,
-            widx: if we { widx } else { 0 },
-            wdata: if we { p.cmd & 0xFF_FFFF } else { 0 },
+            widx,
+            wdata,
         }
+    }
+
+    /// The µC write the SPI slave executes in the next edge (C12), if any, to a register or RAM
+    /// word the variant has: its address and 24 data bits.
+    fn write_of_next_edge(&self) -> Option<(Addr, u32)> {
+        let p = self.spi.ports(&self.sync);
+        let a7 = ((p.cmd >> 25) & 0x7F) as u8;
+        let write = p.exec && (p.cmd >> 24) & 1 == 0;
+        regmap::lookup(self.chip, a7).filter(|_| write).map(|_| (Addr::from_a7(a7), p.cmd & 0xFF_FFFF))
     }
 
     /// The inputs the driver-chain master sees before the next edge: the levels of the current
@@ -324,6 +314,10 @@ impl Tmc429 {
             cont_update: g.g(f::CONT_UPDATE) != 0,
             cw: g.cw,
             dgw: g.dgw,
+            readback_clr: matches!(
+                self.write_of_next_edge(),
+                Some((Addr::Global(regmap::jdx::DATAGRAM_LOW_WORD | regmap::jdx::DATAGRAM_HIGH_WORD), _))
+            ),
             cover_pos: g.cover_pos & 63,
             cover_len: g.cover_len & 31,
             cover_datagram: g.cover_datagram & 0xFF_FFFF,
@@ -362,6 +356,16 @@ impl Tmc429 {
     /// One rising edge of CLK (C1).
     #[inline]
     pub fn tick(&mut self, inp: &Inputs) -> Outputs {
+        if self.bond.refr_absent != 0 {
+            // The package lacks REFR pins: the die sees their pull-ups (C90).
+            let bonded = self.bond.inputs(inp);
+            return self.tick_die(&bonded);
+        }
+        self.tick_die(inp)
+    }
+
+    #[inline]
+    fn tick_die(&mut self, inp: &Inputs) -> Outputs {
         if self.idle_edge(inp) {
             self.cycle += 1;
             self.run_edges += 1;
@@ -437,7 +441,8 @@ impl Tmc429 {
         let mut events = [0u8; 3];
         let mut pc_event = false;
         let match_old = self.pos_match();
-        let mut pins_changed = exec.is_some();
+        let mut pins_changed = exec.is_some() || self.pins_stale;
+        self.pins_stale = false;
         if !self.power_down {
             self.run_edges += 1;
             pins_changed |= self.drivers(pins);
@@ -457,6 +462,7 @@ impl Tmc429 {
 
         if let Some(d) = exec {
             self.execute(d);
+            self.pins_stale = false; // this edge drives the pins (pins_changed)
         }
         // C3: events set after the µC's clear, then the mask forces.
         for (m, e) in self.motors.iter_mut().zip(events) {
@@ -483,13 +489,16 @@ impl Tmc429 {
         let sdo = self.spi.sdo();
         let data_on_nint = self.spi.active && !(self.has_pos_comp() && self.global.ifc(f::SDO_INT));
         self.out.nint_sdo_c = if data_on_nint { sdo } else { !int_old };
-        if self.has_pos_comp() {
+        if self.has_poscmp_pin() {
             self.out.sdoz_c = sdo;
             self.out.sdoz_c_oe = self.spi.active;
             self.out.poscmp = match_old;
         }
         if pins_changed {
             self.driver_pins(pins);
+        }
+        if !self.bond.is_full() {
+            self.bond.outputs(&mut self.out);
         }
         self.out
     }
@@ -503,10 +512,12 @@ impl Tmc429 {
         self.motors[sel].x_actual == self.global.pos_comp
     }
 
-    /// The motion core for one cycle (C40–C63), from the old state.
+    /// The motion core for one cycle (C40–C63), from the old state: the frame schedule of the
+    /// target velocities (C41) and each motor's ramp and pulse generator ([`ramp::edge`]).
     fn motion(&mut self, pins: u16, events: &mut [u8; 3]) {
         let phase = self.prescaler & 31;
         let frame = self.prescaler >> 5;
+        let due = |div: u8| frame & ((1 << div) - 1) == (1 << div) - 1;
         let (left, right) = switches::levels(self.chip, &self.global, pins);
         let n = self.motor_count();
         for (i, m) in self.motors.iter_mut().enumerate().take(n) {
@@ -518,381 +529,9 @@ impl Tmc429 {
             if phase == PHASE_COMMIT {
                 m.vt = m.vt_next;
             }
-            let l = (left >> i) & 1 != 0;
-            let r = (right >> i) & 1 != 0;
-            let rnl = m.ref_conf & REF_RNL != 0;
-            let sel = if rnl { r } else { l };
-            // The tolerance window masks only the REF_RnL-selected switch.
-            let (tol_ok, stop) = motor::switch_stop(m.x_actual, m.v, vt, m.ref_conf, m.dx_ref_tolerance, l, r);
-            let soft = m.ref_conf & SOFT_STOP != 0;
-            let hard_stop = stop && !soft;
-            let at_target = m.x_actual == m.x_target;
-            let stop_at_target = m.rm <= SOFT_MODE && at_target && (m.v.unsigned_abs() >> 8) <= m.v_min as u32;
-
-            // Interrupt conditions (C63).
-            let cond = ((at_target as u8) * INT_POS_END)
-                | (((sel && !tol_ok) as u8) * INT_REF_WRONG)
-                | (((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS)
-                | ((stop as u8) * INT_STOP)
-                | ((!l as u8) * INT_STOP_LEFT_LOW)
-                | (!r as u8) * INT_STOP_RIGHT_LOW
-                | (l as u8) * INT_STOP_LEFT_HIGH
-                | (r as u8) * INT_STOP_RIGHT_HIGH;
-            events[i] = cond & !m.cond_prev;
-            m.cond_prev = cond;
-
-            // Latch (C62).
-            if m.lp && m.v != 0 && sel != m.ref_prev {
-                m.x_latched = m.x_actual;
-                m.lp = false;
-            }
-            m.ref_prev = sel;
-
-            let v_old = m.v;
-            // The stop actions of this cycle are the registered conditions of the last one
-            // (C52, C61); the conditions of this cycle act in the next.
-            let (stop_hard, stop_soft) = (m.stop_hard, m.stop_soft);
-            m.stop_hard = stop_at_target || hard_stop;
-            m.stop_soft = stop && soft;
-            // Ramp tick (C51).
-            if phase == PHASE_RAMP && m.rm != HOLD_MODE && (frame & ((1 << m.ramp_div) - 1)) == (1 << m.ramp_div) - 1 {
-                let t = if stop_soft { 0 } else { vt * 256 };
-                let v_new = Motor::approach(v_old, t, m.a_max);
-                m.a_actual = v_new - v_old;
-                m.v = v_new;
-                if m.rm <= SOFT_MODE {
-                    m.v_target = (vt as u32 & 0xFFF) as u16;
-                }
-            }
-            if stop_hard {
-                m.v = 0;
-            }
-            // Pulse tick (C53): velocity taken as 0 while the hard stop action holds.
-            m.step = false;
-            if phase == PHASE_PULSE && (frame & ((1 << m.pulse_div) - 1)) == (1 << m.pulse_div) - 1 {
-                let v_eff = if stop_hard { 0 } else { v_old };
-                let sum = m.acc + (v_eff.unsigned_abs() >> 8) as u16;
-                m.acc = sum & 0x7FF;
-                if sum > 0x7FF {
-                    m.do_step(v_eff < 0);
-                }
-            }
+            let ramp_tick = phase == PHASE_RAMP && due(m.ramp_div);
+            let pulse_tick = phase == PHASE_PULSE && due(m.pulse_div);
+            events[i] = ramp::edge(m, vt, ramp_tick, pulse_tick, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
         }
-    }
-
-    /// Register read data (24 bits) of a 7-bit address in the current state (C20–C31).
-    pub fn read_register(&self, a7: u8) -> u32 {
-        let Some((reg, motor)) = regmap::lookup(self.chip, a7) else {
-            return 0;
-        };
-        let g = &self.global;
-        match Addr::from_a7(a7) {
-            Addr::Ram(a) => ram::read_word(&self.ram, a),
-            Addr::Motor(_, idx) => {
-                let m = &self.motors[motor.unwrap_or(0) as usize];
-                match idx {
-                    0 => m.x_target,
-                    1 => m.x_actual,
-                    2 => m.v_min as u32,
-                    3 => m.v_max as u32,
-                    4 => m.v_target as u32,
-                    5 => f::V_ACTUAL.put(m.v_actual() as u32),
-                    6 => m.a_max as u32,
-                    7 => f::A_ACTUAL.put(m.a_actual as u32),
-                    8 => {
-                        f::IS_AGTAT.put(m.is_agtat as u32)
-                            | f::IS_ALEAT.put(m.is_aleat as u32)
-                            | f::IS_V0.put(m.is_v0 as u32)
-                            | f::A_THRESHOLD.put(m.a_threshold as u32)
-                    }
-                    9 => f::PMUL.put(0x80 | m.pmul as u32) | f::PDIV.put(m.pdiv as u32),
-                    10 => f::LP.put(m.lp as u32) | ((m.ref_conf as u32) << 8) | f::RM.put(m.rm as u32),
-                    11 => f::INTERRUPT_MASK.put(m.int_mask as u32) | f::INTERRUPT_FLAGS.put(m.int_flags as u32),
-                    12 => f::PULSE_DIV.put(m.pulse_div as u32) | f::RAMP_DIV.put(m.ramp_div as u32) | f::USRS.put(m.usrs as u32),
-                    13 => m.dx_ref_tolerance as u32,
-                    14 => m.x_latched,
-                    15 => m.ustep as u32,
-                    _ => 0,
-                }
-            }
-            Addr::Global(jdx) => match jdx {
-                0 => (g.readback & 0xFF_FFFF) as u32,
-                1 => ((g.readback >> 24) & 0xFF_FFFF) as u32,
-                2 => {
-                    f::COVER_WAITING.put(self.chain.cw(g) as u32)
-                        | f::COVER_POS.put((g.cover_pos as u32 + 1) & 63)
-                        | f::COVER_LEN.put(g.cover_len as u32)
-                }
-                3 => g.cover_datagram,
-                4 => g.ifconf,
-                5 => g.pos_comp,
-                6 => f::POS_COMP_M.put(g.pc_m as u32) | f::POS_COMP_I.put(g.pc_i as u32),
-                9 => TYPE_VERSION,
-                14 => {
-                    let (l, r) = self.switches();
-                    let mut w = 0;
-                    for m in 0..3 {
-                        w |= (((r >> m) & 1) as u32) << (2 * m) | (((l >> m) & 1) as u32) << (2 * m + 1);
-                    }
-                    w
-                }
-                15 => g.gconf & reg.writable_mask(),
-                _ => 0,
-            },
-        }
-    }
-
-    /// Marks the motion core's inputs as changed (ends the fast path of [`Tmc429::tick`]).
-    #[inline]
-    pub(crate) fn touch(&mut self) {
-        self.quiet = false;
-    }
-
-    /// Executes a 32-bit datagram (C12): a register or RAM write; reads have no side effects.
-    fn execute(&mut self, d: u32) {
-        if (d >> 24) & 1 == 1 {
-            return;
-        }
-        self.write_register(((d >> 25) & 0x7F) as u8, d & 0xFF_FFFF);
-    }
-
-    /// A µC write of `data` (24 bits) to a 7-bit address, with every side effect (C20–C31).
-    pub fn write_register(&mut self, a7: u8, data: u32) {
-        let Some((reg, motor)) = regmap::lookup(self.chip, a7) else {
-            return;
-        };
-        let data = data & 0xFF_FFFF;
-        self.touch();
-        match Addr::from_a7(a7) {
-            Addr::Ram(a) => ram::write_word(&mut self.ram, a, data),
-            Addr::Motor(_, idx) => {
-                let m = &mut self.motors[motor.unwrap_or(0) as usize];
-                match idx {
-                    0 => m.x_target = data,
-                    1 => m.x_actual = data,
-                    2 => m.v_min = f::V_MIN.get(data) as u16,
-                    3 => m.v_max = f::V_MAX.get(data) as u16,
-                    4 => m.v_target = f::V_TARGET.get(data) as u16,
-                    5 => {
-                        // C23: V := w·256, −2048 as −2047.
-                        let w = (f::V_ACTUAL.value(data) as i32).max(-2047);
-                        m.v = w * 256;
-                    }
-                    6 => m.a_max = f::A_MAX.get(data) as u16,
-                    7 => {}
-                    8 => {
-                        m.is_agtat = f::IS_AGTAT.get(data) as u8;
-                        m.is_aleat = f::IS_ALEAT.get(data) as u8;
-                        m.is_v0 = f::IS_V0.get(data) as u8;
-                        m.a_threshold = f::A_THRESHOLD.get(data) as u16;
-                    }
-                    9 => {
-                        m.pmul = (f::PMUL.get(data) & 0x7F) as u8;
-                        m.pdiv = f::PDIV.get(data) as u8;
-                    }
-                    10 => {
-                        m.ref_conf = ((data >> 8) & 0xF) as u8;
-                        m.rm = f::RM.get(data) as u8;
-                    }
-                    11 => {
-                        m.int_mask = f::INTERRUPT_MASK.get(data) as u8;
-                        m.int_flags &= !(f::INTERRUPT_FLAGS.get(data) as u8);
-                        m.int_flags &= m.int_mask;
-                    }
-                    12 => {
-                        m.pulse_div = f::PULSE_DIV.get(data) as u8;
-                        m.ramp_div = f::RAMP_DIV.get(data) as u8;
-                        m.usrs = f::USRS.get(data) as u8;
-                    }
-                    13 => m.dx_ref_tolerance = f::DX_REF_TOLERANCE.get(data) as u16,
-                    14 => m.lp = true,
-                    15 => m.ustep = f::USTEP_COUNT.get(data) as u8,
-                    _ => {}
-                }
-            }
-            Addr::Global(jdx) => {
-                let g = &mut self.global;
-                match jdx {
-                    0 | 1 => g.dgw = true,
-                    2 => {
-                        g.cover_pos = f::COVER_POS.get(data) as u8;
-                        g.cover_len = f::COVER_LEN.get(data) as u8;
-                    }
-                    3 => {
-                        g.cover_datagram = data;
-                        g.cw = true;
-                    }
-                    4 => g.ifconf = data & reg.writable_mask(),
-                    5 => g.pos_comp = data,
-                    6 => {
-                        g.pc_m = f::POS_COMP_M.get(data) != 0;
-                        if f::POS_COMP_I.get(data) != 0 || !g.pc_m {
-                            g.pc_i = false;
-                        }
-                    }
-                    8 => self.power_down = true,
-                    15 => g.gconf = data & reg.writable_mask(),
-                    _ => {}
-                }
-            }
-        }
-    }
-}
-
-/// Driver side: microstep unit, current scaling, SPI chain and Step/Dir (C70–C99).
-impl Tmc429 {
-    /// The driver units would change nothing in this edge (part of the fast path of
-    /// [`Tmc429::tick`]): the chain idle without a request, no ramp tick that counts for the
-    /// continuous update or the current-scale selector, the Step/Dir unit idle.
-    #[inline]
-    fn drivers_quiet(&self) -> bool {
-        if self.chip != Chip::Tmc4210 {
-            let c = &self.chain;
-            let spi = self.spi_mode();
-            let quiet = if c.state == chain::IDLE {
-                !c.req && !c.cs && c.stepped == 0 && !(self.global.cw && spi)
-            } else {
-                // Counting down inside a state: the edge only decrements (Chain::count_down).
-                spi && c.counting_only()
-            };
-            if !quiet {
-                return false;
-            }
-            if self.prescaler & 31 == PHASE_RAMP {
-                let frame = self.prescaler >> 5;
-                let cont = self.spi_mode() && self.global.g(f::CONT_UPDATE) != 0;
-                for (m, cs) in self.motors.iter().zip(self.cur.iter()) {
-                    let mask = (1u32 << m.ramp_div) - 1;
-                    if frame & mask == mask && (cont || m.v != 0 || cs.v0_count < current::V0_DELAY_TICKS) {
-                        return false;
-                    }
-                }
-            }
-        }
-        self.chip == Chip::Tmc428 || self.sd.quiet(self.step_dir_mode(), self.run_edges + 1)
-    }
-
-    /// Driver interface mode of the current state (C89, C91).
-    #[inline]
-    fn spi_mode(&self) -> bool {
-        match self.chip {
-            Chip::Tmc428 => true,
-            Chip::Tmc429 => !self.global.ifc(f::EN_SD),
-            Chip::Tmc4210 => false,
-        }
-    }
-
-    #[inline]
-    fn step_dir_mode(&self) -> bool {
-        self.chip != Chip::Tmc428 && self.global.ifc(f::EN_SD)
-    }
-
-    /// One edge of the driver units, from the old state (C1, C70). Runs before the motion core
-    /// mutates the motors, so every unit sees the step flags and indices of the previous edge.
-    /// Returns true when a driver-side pin may have changed.
-    #[inline]
-    fn drivers(&mut self, pins: u16) -> bool {
-        let mut ramp_ticks = 0u8;
-        if self.prescaler & 31 == PHASE_RAMP {
-            let frame = self.prescaler >> 5;
-            for (i, m) in self.motors.iter().enumerate() {
-                let mask = (1u32 << m.ramp_div) - 1;
-                ramp_ticks |= (((frame & mask) == mask) as u8) << i;
-            }
-        }
-        let spi = self.spi_mode();
-        let mut changed = false;
-        if self.chip != Chip::Tmc4210 {
-            let sdi = (pins >> sync::bit::SDI_S) & 1 != 0;
-            changed = self.chain.tick(spi, &self.ram, &mut self.global, &self.motors, &self.cur, ramp_ticks, sdi);
-            if ramp_ticks != 0 {
-                for i in 0..3 {
-                    if (ramp_ticks >> i) & 1 != 0 {
-                        self.cur[i].ramp_tick(&self.motors[i]);
-                    }
-                }
-            }
-        }
-        if self.chip != Chip::Tmc428 {
-            let n = self.motor_count();
-            let sd = self.step_dir_mode();
-            changed |= self.sd.tick(self.run_edges, sd, n, &self.motors, self.global.g(f::CLK2_DIV), self.global.ifc(f::STEP_HALF));
-        }
-        changed
-    }
-
-    /// Drives the driver-side output pins from the new state and samples the multiplexed
-    /// reference switches on nSCS_S edges (C81, C87, C91, C92). `pins`: the synchronized inputs of
-    /// the old state.
-    fn driver_pins(&mut self, pins: u16) {
-        let g = &self.global;
-        if self.spi_mode() {
-            let (ncs, ncs2, ncs3, sck, sdo) = self.chain.pins(g);
-            if g.g(f::REFMUX) != 0 && ncs != self.out.nscs_s {
-                // 74HC157 on nSCS_S: left switches while the pin is high, right while low (C87).
-                let inv = self.chip != Chip::Tmc428 && g.ifc(f::INV_REF);
-                let mut mux = g.mux_switches;
-                // The pin was low before this edge → the right switches were presented.
-                let right = !self.out.nscs_s;
-                for m in 0..3u32 {
-                    let lv = ((pins >> (sync::bit::REF1 + m)) & 1 != 0) ^ inv;
-                    let b = if right { 2 * m } else { 2 * m + 1 };
-                    mux = (mux & !(1 << b)) | ((lv as u8) << b);
-                }
-                self.global.mux_switches = mux;
-            }
-            self.out.nscs_s = ncs;
-            self.out.nscs2 = ncs2;
-            self.out.nscs3 = ncs3;
-            self.out.sck_s = sck;
-            self.out.sdo_s = sdo;
-            self.out.sdi_s_o = false;
-            self.out.sdi_s_oe = false;
-            return;
-        }
-        let inv_stp = g.ifc(f::INV_STP);
-        let inv_dir = g.ifc(f::INV_DIR);
-        let sd = self.step_dir_mode();
-        match self.chip {
-            Chip::Tmc429 => {
-                // S1 = SDO_S, D1 = SCK_S, S2 = nSCS_S, D2 = SDI_S, S3 = nSCS2, D3 = nSCS3.
-                let (s1, d1) = self.sd.pins(0, inv_stp, inv_dir);
-                let (s2, d2) = self.sd.pins(1, inv_stp, inv_dir);
-                let (s3, d3) = self.sd.pins(2, inv_stp, inv_dir);
-                self.out.sdo_s = s1;
-                self.out.sck_s = d1;
-                self.out.nscs_s = s2;
-                self.out.sdi_s_o = d2;
-                self.out.sdi_s_oe = true;
-                self.out.nscs2 = s3;
-                self.out.nscs3 = d3;
-            }
-            _ => {
-                // TMC4210: STEP = SDO_S, DIR = SCK_S; logic high until en_sd = 1 (C92).
-                let (s, d) = if sd { self.sd.pins(0, inv_stp, inv_dir) } else { (true, true) };
-                self.out.sdo_s = s;
-                self.out.sck_s = d;
-                self.out.nscs_s = true;
-                self.out.nscs2 = true;
-                self.out.nscs3 = true;
-                self.out.sdi_s_o = false;
-                self.out.sdi_s_oe = false;
-            }
-        }
-    }
-
-    /// Driver-chain state (read-only).
-    pub fn chain(&self) -> &chain::Chain {
-        &self.chain
-    }
-
-    /// Current-scale selector of motor `m` (read-only).
-    pub fn current_scale(&self, m: usize) -> &current::CurrentScale {
-        &self.cur[m]
-    }
-
-    /// Step/Dir state (read-only).
-    pub fn step_dir(&self) -> &stepdir::StepDir {
-        &self.sd
     }
 }

@@ -28,7 +28,7 @@ pub const V_MAG_MAX: i32 = (1 << 19) - 1;
 /// |dx| limit of the ramp generator (TMC428 §8.7.1).
 pub const DX_LIMIT: u32 = (1 << 19) - 1;
 
-const MASK24: u32 = 0xFF_FFFF;
+pub(crate) const MASK24: u32 = 0xFF_FFFF;
 
 /// Sign-extends a 24-bit value.
 #[inline]
@@ -56,6 +56,24 @@ pub fn isqrt(n: u64) -> u64 {
         r += 1;
     }
     r
+}
+
+/// The RAMP_MODE braking law (C50): the largest velocity from which the motor still comes
+/// down to v_min without passing the target, `(isqrt(Y) − h) >> 2` (0 below h) with
+/// Y = (p_mul·(|dx|−1)·2^12) >> pdiv and h = ⌈a_max/128⌉ when ramp_div ≥ pulse_div, else 0.
+///
+/// √Y is 4·√(2048·p·(|dx|−1)), p = p_mul/2^(3+pdiv) (TMC429 §8.1.10): 4 times the velocity from which
+/// the continuous deceleration p stands for ends at rest one step before the target (the step
+/// of margin is the pulse accumulator's phase). The chip's velocity changes only at ramp
+/// ticks, by a = a_max/256 each (TMC429 §8.1.10.2), and holds for the 2^(ramp_div −
+/// pulse_div) pulse ticks between them; braking from v in those steps covers up to
+/// (v + a/2)²/(2048·p) steps, so the law aims a/2 lower: isqrt(Y) is that velocity to a
+/// quarter, and h = ⌈a_max/128⌉ is 4·a/2 rounded up. With ramp_div < pulse_div no correction
+/// is needed (h = 0: the law is isqrt(Y >> 4)). `adx` is |dx| limited to 2^19 − 1 (C43), ≥ 1.
+pub fn braking_velocity(p_mul: u32, pdiv: u8, adx: u32, a_max: u16, pulse_div: u8, ramp_div: u8) -> u32 {
+    let y = ((p_mul as u64) * (adx as u64 - 1)) << 12 >> pdiv;
+    let h = if ramp_div >= pulse_div { (a_max as u32).div_ceil(128) } else { 0 };
+    (isqrt(y) as u32).saturating_sub(h) >> 2
 }
 
 /// Registers and internal state of one motor. Field names are the datasheet's.
@@ -189,7 +207,7 @@ impl Motor {
                 }
                 let adx = (dx.unsigned_abs()).min(DX_LIMIT) as u64;
                 let mag = if self.rm == RAMP_MODE {
-                    isqrt((p_mul * (adx - 1)) << 8 >> self.pdiv) as i64
+                    braking_velocity(p_mul as u32, self.pdiv, adx as u32, self.a_max, self.pulse_div, self.ramp_div) as i64
                 } else {
                     ((p_mul * adx) >> (3 + self.pdiv as u32)) as i64
                 };
@@ -243,99 +261,5 @@ impl Motor {
         }
         self.step = true;
         self.dir = negative;
-    }
-}
-
-/// The switch-stop condition (C61) and the tolerance window: `(tol_ok, stop)` for the left and
-/// right switch levels `l`, `r`, position `x_actual`, internal velocity `v`, committed target
-/// velocity `vt`, `ref_conf` and `dx_ref_tolerance`. stop_L = ¬DISABLE_STOP_L ∧ L ∧ moving
-/// negative ∧ (REF_RnL ∨ ¬tol_ok), stop_R symmetric; the tolerance window masks only the
-/// REF_RnL-selected switch; tol_ok = |x_actual| < dx_ref_tolerance.
-#[inline]
-pub fn switch_stop(x_actual: u32, v: i32, vt: i32, ref_conf: u8, dx_ref_tolerance: u16, l: bool, r: bool) -> (bool, bool) {
-    let tol_ok = sext24(x_actual).unsigned_abs() < dx_ref_tolerance as u32;
-    let rnl = ref_conf & REF_RNL != 0;
-    let moving_neg = v < 0 || (v == 0 && vt < 0);
-    let moving_pos = v > 0 || (v == 0 && vt > 0);
-    let stop_l = ref_conf & DISABLE_STOP_L == 0 && l && moving_neg && (rnl || !tol_ok);
-    let stop_r = ref_conf & DISABLE_STOP_R == 0 && r && moving_pos && (!rnl || !tol_ok);
-    (tol_ok, stop_l || stop_r)
-}
-
-/// The inputs of one motor's ramp and pulse generator at its RTL boundary (`tmc429_ramp`,
-/// rtl/README.md "The ramp unit"): levels of the old state, presented before a CLK edge.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RampInputs {
-    /// The motion core runs (not powered down, C66).
-    pub run: bool,
-    /// Phase 30 of a frame F with F mod 2^ramp_div = 2^ramp_div − 1 (C40, C41); any ramp mode.
-    pub ramp_tick: bool,
-    /// Phase 31 of a frame F with F mod 2^pulse_div = 2^pulse_div − 1 (C53).
-    pub pulse_tick: bool,
-    pub rm: u8,
-    pub x_target: u32,
-    pub v_min: u16,
-    pub a_max: u16,
-    /// [`DISABLE_STOP_L`], [`DISABLE_STOP_R`], [`SOFT_STOP`], [`REF_RNL`].
-    pub ref_conf: u8,
-    pub usrs: u8,
-    pub dx_ref_tolerance: u16,
-    /// Committed target velocity (C41), integer units.
-    pub vt: i32,
-    /// Left and right switch after mapping (C60).
-    pub sw_l: bool,
-    pub sw_r: bool,
-    /// A µC write to this motor's register `widx` executes in this edge (C12).
-    pub we: bool,
-    pub widx: u8,
-    pub wdata: u32,
-}
-
-/// The outputs of the ramp unit: its registers after an edge, and the conditions of those
-/// registers with the edge's inputs `RampInputs` (what the RTL's combinational outputs show
-/// while that line's inputs are applied).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RampPorts {
-    pub x_actual: u32,
-    /// Internal velocity V, 20-bit two's complement (1/256 units).
-    pub v: u32,
-    pub v_target: u16,
-    /// a_actual, 12-bit two's complement (C25).
-    pub a_actual: u16,
-    pub ustep: u8,
-    pub acc: u16,
-    pub step: bool,
-    pub dir: bool,
-    pub x_latched: u32,
-    pub lp: bool,
-    /// x_actual = x_target.
-    pub xeqt: bool,
-    /// Switch-stop condition ([`switch_stop`], C61, C63).
-    pub stop: bool,
-    /// |x_actual| < dx_ref_tolerance.
-    pub tol_ok: bool,
-    /// v_actual readout sign(V)·(|V| >> 8), 12-bit two's complement (C42).
-    pub v_actual: u16,
-}
-
-/// The ramp unit's outputs for the motor state `m` (after an edge) and the inputs `i` of that
-/// edge ([`RampPorts`]).
-pub fn ramp_ports(m: &Motor, i: &RampInputs) -> RampPorts {
-    let (tol_ok, stop) = switch_stop(m.x_actual, m.v, i.vt, i.ref_conf, i.dx_ref_tolerance, i.sw_l, i.sw_r);
-    RampPorts {
-        x_actual: m.x_actual & MASK24,
-        v: (m.v as u32) & 0xF_FFFF,
-        v_target: m.v_target & 0xFFF,
-        a_actual: (m.a_actual as u32 & 0xFFF) as u16,
-        ustep: m.ustep,
-        acc: m.acc & 0x7FF,
-        step: m.step,
-        dir: m.dir,
-        x_latched: m.x_latched & MASK24,
-        lp: m.lp,
-        xeqt: m.x_actual == i.x_target,
-        stop,
-        tol_ok,
-        v_actual: (m.v_actual() as u32 & 0xFFF) as u16,
     }
 }

@@ -70,15 +70,16 @@ pub struct Outputs {
 
 impl Outputs {
     /// The levels with nothing selected: nINT inactive (high), SDOZ_C and SDI_S not driven,
-    /// the chip selects inactive, SCK_S high, SDO_S and POSCMP low; a chip's power-on pins start
-    /// from these (`Tmc429::new` then applies its variant's driver pins and pos_comp).
+    /// the chip selects inactive, SCK_S and SDO_S high ([429] §8.2.4 note, Fig. 11.1), POSCMP
+    /// low; a chip's power-on pins start from these (`Tmc429::new` then applies its variant's
+    /// driver pins and pos_comp).
     pub const IDLE: Outputs = Outputs {
         nint_sdo_c: true,
         sdoz_c: false,
         sdoz_c_oe: false,
         nscs_s: true,
         sck_s: true,
-        sdo_s: false,
+        sdo_s: true,
         sdi_s_o: false,
         sdi_s_oe: false,
         nscs2: true,
@@ -87,7 +88,7 @@ impl Outputs {
     };
 }
 
-/// Per-motor internal state exposed for comparison and tracing (ARCHITECTURE.md, probes).
+/// Per-motor internal state exposed for comparison and tracing (the probes, docs/cosim.md).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct MotorProbe {
@@ -143,4 +144,59 @@ pub struct Probes {
     pub power_down: u8,
     /// Status byte as it would be sent now.
     pub status: u8,
+}
+
+/// The pins a package lacks beyond its variant's (contract C90): absent REFR inputs read 1
+/// (their internal pull-ups, TMC429 §4.2), absent outputs are tied off (nSCS2, nSCS3 = 1;
+/// POSCMP = 0; SDOZ_C not driven).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Bonding {
+    /// Bit n − 1: REFRn is not bonded.
+    pub refr_absent: u8,
+    /// nSCS2 and nSCS3 are not bonded.
+    pub no_nscs23: bool,
+    /// POSCMP and SDOZ_C are not bonded.
+    pub no_poscmp_sdoz: bool,
+}
+
+impl Bonding {
+    /// The pins `package` lacks on `chip` (a package `chip` does not come in lacks nothing).
+    pub fn of(chip: crate::Chip, package: crate::chip::Package) -> Bonding {
+        use crate::chip::Package;
+        match (chip, package) {
+            (crate::Chip::Tmc429, Package::Sop24) => Bonding { refr_absent: 0b100, ..Bonding::default() },
+            (crate::Chip::Tmc429, Package::Ssop16) => Bonding { refr_absent: 0b111, no_nscs23: true, no_poscmp_sdoz: true },
+            (crate::Chip::Tmc428, Package::Ssop16) => Bonding { no_nscs23: true, ..Bonding::default() },
+            _ => Bonding::default(),
+        }
+    }
+
+    /// Every pin of the variant is bonded.
+    pub fn is_full(&self) -> bool {
+        *self == Bonding::default()
+    }
+
+    /// The levels the die sees for the pins `i` (absent REFR inputs pulled up).
+    #[inline]
+    pub fn inputs(&self, i: &Inputs) -> Inputs {
+        let mut b = *i;
+        b.refr1 |= self.refr_absent & 1 != 0;
+        b.refr2 |= self.refr_absent & 2 != 0;
+        b.refr3 |= self.refr_absent & 4 != 0;
+        b
+    }
+
+    /// Ties off the outputs the package lacks.
+    #[inline]
+    pub fn outputs(&self, o: &mut Outputs) {
+        if self.no_nscs23 {
+            o.nscs2 = true;
+            o.nscs3 = true;
+        }
+        if self.no_poscmp_sdoz {
+            o.poscmp = false;
+            o.sdoz_c = false;
+            o.sdoz_c_oe = false;
+        }
+    }
 }

@@ -4,7 +4,8 @@
 use crate::Chip;
 
 /// Table 12-2 of the TMC428 datasheet: y(i) = int(½ + 64·sin(π·i/128)), 63 where that is 64
-/// (spec-digest §5.3; the 62-value list printed in TMC428 §12 is erratum E5).
+/// (all 64 values as TMC429 §11.5 prints them; the 62-value list printed in TMC428 §12 is
+/// erratum E5).
 pub const SINE_LUT: [u8; 64] = [
     0, 2, 3, 5, 6, 8, 9, 11, 12, 14, 16, 17, 19, 20, 22, 23, 24, 26, 27, 29, 30, 32, 33, 34, 36, 37, 38, 39, 41, 42, 43, 44, 45, 46, 47,
     48, 49, 50, 51, 52, 53, 54, 55, 56, 56, 57, 58, 59, 59, 60, 60, 61, 61, 62, 62, 62, 63, 63, 63, 63, 63, 63, 63, 63,
@@ -25,10 +26,12 @@ pub const TMC429_POR_CONFIG: [u8; 36] = [
     0x11, 0x05, 0x04, 0x03, 0x02, 0x06, 0x11, 0x0D, 0x0C, 0x0B, 0x0A, 0x2E,
 ];
 
-/// Power-on RAM contents of a variant (contract C30).
+/// Power-on RAM contents of a variant (contract C30): TMC428 all 0 (not initialized, TMC428
+/// §7.3); TMC429 its default configuration and sine table (TMC429 §11.4.2, §11.5); TMC4210
+/// "initialized internally" (TMC4210 §5.3) with values it does not publish: the TMC429's.
 pub fn power_on(chip: Chip) -> [u8; 128] {
     let mut ram = [0u8; 128];
-    if chip == Chip::Tmc429 {
+    if chip != Chip::Tmc428 {
         ram[..36].copy_from_slice(&TMC429_POR_CONFIG);
         ram[64..].copy_from_slice(&SINE_LUT);
     }

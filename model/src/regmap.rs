@@ -3,7 +3,7 @@
 //! Everything else is derived from [`REGISTERS`]: the model's field decoding (through the
 //! [`f`] field constants), `tmc429 regmap --format md|c|json`, `docs/regmap.md`, the C header and
 //! the decoded register names of traces. Sources: TMC428 datasheet Table 7-2 and §8–§10,
-//! TMC429 datasheet §8, TMC4210 datasheet §5, spec-digest §2–§3.
+//! TMC429 datasheet §7.3 and §8, TMC4210 datasheet §5.
 
 use crate::Chip;
 
@@ -284,7 +284,7 @@ pub static REGISTERS: &[Register] = &[
     reg("ustep_count", Motor, idx::USTEP_COUNT, ChipSet::TMC429_4210, &[USTEP_COUNT], 0, "", "TMC429 §8.1.16"),
     reg("datagram_low_word", Global, jdx::DATAGRAM_LOW_WORD, ChipSet::SPI_CHAIN, &[DATAGRAM_LOW], 0, "a write arms CDGW until the next datagram completes", "TMC428 §9.1"),
     reg("datagram_high_word", Global, jdx::DATAGRAM_HIGH_WORD, ChipSet::SPI_CHAIN, &[DATAGRAM_HIGH], 0, "a write arms CDGW until the next datagram completes", "TMC428 §9.1"),
-    reg("cover_pos_len", Global, jdx::COVER_POS_LEN, ChipSet::SPI_CHAIN, &[COVER_WAITING, COVER_POS, COVER_LEN], 0x000100, "cover_pos reads back +1 (contract C29)", "TMC428 §9.2"),
+    reg("cover_pos_len", Global, jdx::COVER_POS_LEN, ChipSet::SPI_CHAIN, &[COVER_WAITING, COVER_POS, COVER_LEN], 0, "the register stores cover_pos + 1 and reads it back: 0 after power-on (contract C29)", "TMC428 §9.2"),
     reg("cover_datagram", Global, jdx::COVER_DATAGRAM, ChipSet::SPI_CHAIN, &[COVER_DATAGRAM], 0, "a write sets cw and requests a datagram", "TMC428 §9.3"),
     reg("if_configuration", Global, jdx::IF_CONFIGURATION, ChipSet::TMC429_4210, &[INV_REF, SDO_INT, STEP_HALF, INV_STP, INV_DIR, EN_SD, POS_COMP_SEL, EN_REFR], 0, "", "TMC429 §8.2.4"),
     reg("pos_comp", Global, jdx::POS_COMP, ChipSet::TMC429_4210, &[POS_COMP], 0, "", "TMC429 §8.2.4.1"),
@@ -294,8 +294,8 @@ pub static REGISTERS: &[Register] = &[
     reg("ref_switches", Global, jdx::REF_SWITCHES, ChipSet::ALL, &[R1, L1, R2, L2, R3, L3], 0, "", "TMC428 §9.6, TMC429 §8.2.4.5"),
     reg("global_parameters", Global, jdx::GLOBAL_PARAMETERS, ChipSet::NOT_4210, &[LSMD, POL_NSCS_S, POL_SCK_S, POL_PH_AB, POL_FD_AB, POL_DAC_AB, CS_COM_IND, CLK2_DIV, CONT_UPDATE, REFMUX, MOT1R], 0x000F00, "", "TMC428 §9.7, TMC429 §8.2.5"),
     reg("global_parameters", Global, jdx::GLOBAL_PARAMETERS, ChipSet::TMC4210, &[STPDIV, MOT1R], 0x000F00, "", "TMC4210 §5.3"),
-    reg("ram_driver_config", Ram, 0, ChipSet::NOT_4210, &[RAM_ODD, RAM_EVEN], 0, "two 6-bit cells per word: bit 5 NxM, bits 4..0 primary signal code", "TMC428 §10, §11"),
-    reg("ram_microstep_table", Ram, 1, ChipSet::NOT_4210, &[RAM_ODD, RAM_EVEN], 0, "two 6-bit quarter-sine entries per word", "TMC428 §10, §12"),
+    reg("ram_driver_config", Ram, 0, ChipSet::ALL, &[RAM_ODD, RAM_EVEN], 0, "two 6-bit cells per word: bit 5 NxM, bits 4..0 primary signal code (the TMC4210 stores them, it has no driver chain)", "TMC428 §10, §11; TMC4210 §1.3, §5.2.3"),
+    reg("ram_microstep_table", Ram, 1, ChipSet::ALL, &[RAM_ODD, RAM_EVEN], 0, "two 6-bit quarter-sine entries per word (the TMC4210 stores them, it has no microstep unit)", "TMC428 §10, §12; TMC4210 §1.3, §5.2.3"),
 ];
 
 /// A decoded 7-bit address.

@@ -16,6 +16,7 @@ use std::sync::{Arc, Mutex};
 use crate::events::{Event, EventDecoder};
 use crate::host::Host;
 use crate::regmap::{self, Addr};
+use crate::text::shown;
 use crate::{Chip, Inputs};
 
 /// Input pins a script may set.
@@ -111,10 +112,10 @@ fn parse_line(text: &str) -> Result<Option<Command>, String> {
                 .parse()
                 .ok()
                 .filter(|n| (1..=31).contains(n))
-                .ok_or_else(|| format!("expected a bit count 1..31, found '{}'", toks[1]))?;
-            let (v, _) = parse_hex(toks[2]).ok_or_else(|| format!("expected a hex value, found '{}'", toks[2]))?;
+                .ok_or_else(|| format!("expected a bit count 1..31, found '{}'", shown(toks[1])))?;
+            let (v, _) = parse_hex(toks[2]).ok_or_else(|| format!("expected a hex value, found '{}'", shown(toks[2])))?;
             if v >> n != 0 {
-                return Err(format!("value {} does not fit in {} bits", toks[2], n));
+                return Err(format!("value {} does not fit in {} bits", shown(toks[2]), n));
             }
             Ok(Some(Command::Bits { n, value: v as u32 }))
         }
@@ -122,7 +123,8 @@ fn parse_line(text: &str) -> Result<Option<Command>, String> {
             if toks.len() != 2 {
                 return Err("expected 'wait CYCLES'".into());
             }
-            let c: u64 = toks[1].replace('_', "").parse().map_err(|_| format!("expected a decimal cycle count, found '{}'", toks[1]))?;
+            let c: u64 =
+                toks[1].replace('_', "").parse().map_err(|_| format!("expected a decimal cycle count, found '{}'", shown(toks[1])))?;
             Ok(Some(Command::Wait(c)))
         }
         "pin" => {
@@ -131,13 +133,13 @@ fn parse_line(text: &str) -> Result<Option<Command>, String> {
             }
             let mut set = Vec::new();
             for t in &toks[1..] {
-                let (name, val) = t.split_once('=').ok_or_else(|| format!("expected NAME=0 or NAME=1, found '{t}'"))?;
+                let (name, val) = t.split_once('=').ok_or_else(|| format!("expected NAME=0 or NAME=1, found '{}'", shown(t)))?;
                 let pin = Pin::parse(name)
-                    .ok_or_else(|| format!("unknown pin '{name}': expected REF1, REF2, REF3, REFR1, REFR2, REFR3 or SDI_S"))?;
+                    .ok_or_else(|| format!("unknown pin '{}': expected REF1, REF2, REF3, REFR1, REFR2, REFR3 or SDI_S", shown(name)))?;
                 let level = match val {
                     "0" => false,
                     "1" => true,
-                    _ => return Err(format!("pin {name}: expected 0 or 1, found '{val}'")),
+                    _ => return Err(format!("pin {}: expected 0 or 1, found '{}'", shown(name), shown(val))),
                 };
                 set.push((pin, level));
             }
@@ -145,12 +147,12 @@ fn parse_line(text: &str) -> Result<Option<Command>, String> {
         }
         _ => {
             if toks.len() != 1 {
-                return Err(format!("unexpected '{}' after the datagram", toks[1..].join(" ")));
+                return Err(format!("unexpected '{}' after the datagram", shown(&toks[1..].join(" "))));
             }
             match parse_hex(toks[0]) {
                 Some((v, 8)) => Ok(Some(Command::Datagram(v as u32))),
-                Some(_) => Err(format!("a datagram has exactly 8 hex digits, found '{}'", toks[0])),
-                None => Err(format!("expected a datagram (8 hex digits), 'bits', 'wait' or 'pin', found '{}'", toks[0])),
+                Some(_) => Err(format!("a datagram has exactly 8 hex digits, found '{}'", shown(toks[0]))),
+                None => Err(format!("expected a datagram (8 hex digits), 'bits', 'wait' or 'pin', found '{}'", shown(toks[0]))),
             }
         }
     }
@@ -204,10 +206,12 @@ pub fn decode(chip: Chip, datagram: u32, reply: u32) -> String {
     format!("{} {}{}{} | {}", if read { "R" } else { "W" }, name, sep, fields, decode_status(st))
 }
 
+/// The status byte's bits, bit 0 first (TMC428 Table 6-4).
+pub const STATUS_BITS: [&str; 8] = ["xEQt1", "RS1", "xEQt2", "RS2", "xEQt3", "RS3", "CDGW", "INT"];
+
 /// `status $15: xEQt1 xEQt2 xEQt3` (TMC428 Table 6-4).
 pub fn decode_status(st: u8) -> String {
-    const NAMES: [&str; 8] = ["xEQt1", "RS1", "xEQt2", "RS2", "xEQt3", "RS3", "CDGW", "INT"];
-    let set: Vec<&str> = (0..8).rev().filter(|b| st >> b & 1 == 1).map(|b| NAMES[b]).collect();
+    let set: Vec<&str> = (0..8).rev().filter(|b| st >> b & 1 == 1).map(|b| STATUS_BITS[b]).collect();
     format!("status ${:02X}: {}", st, if set.is_empty() { "-".to_string() } else { set.join(" ") })
 }
 

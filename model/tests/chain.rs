@@ -1,4 +1,4 @@
-//! Driver-chain SPI master at pin level (TMC428 §6.3, §9.1–§9.7, §11; spec-digest §5.2;
+//! Driver-chain SPI master at pin level (TMC428 §6.3, §9.1–§9.7, §11, Table 11-2;
 //! contract C80–C89). Datagrams are decoded from nSCS_S / SCK_S / SDO_S by the EventDecoder.
 
 mod drv;
@@ -24,9 +24,9 @@ fn datagram_at(w: [u8; 3], iscale: Option<u32>) -> (u32, u64) {
     (n, bits)
 }
 
-/// spec-digest §5.2: Table 11-2 configuration, Table 12-2 LUT, LSMD 2.
+/// TMC428 Table 11-2 configuration, Table 12-2 LUT, LSMD 2: the datagrams C71–C76 and C84 give.
 #[test]
-fn digest_5_2_datagrams_bit_for_bit() {
+fn table_11_2_datagrams_bit_for_bit() {
     let cases: [([u8; 3], u64); 9] = [
         ([0, 0, 0], 0x05F05F07F),
         ([1, 1, 1], 0x05F05F07F),
@@ -45,7 +45,7 @@ fn digest_5_2_datagrams_bit_for_bit() {
     assert_eq!(datagram_at([16, 16, 16], Some(4)), (36, 0x1CF1CF1EF));
 }
 
-/// spec-digest §5.2: TMC429 power-on RAM (One at MDA/MDB), LSMD 2, w = 0.
+/// TMC429 §11.4.2: the power-on RAM (One at MDA/MDB), LSMD 2, w = 0.
 #[test]
 fn tmc429_power_on_configuration() {
     let (mut h, log) = host_with_events(Chip::Tmc429);
@@ -67,7 +67,7 @@ fn covered(pos: u32, len: u32, data: u32) -> u64 {
     c[0].2
 }
 
-/// spec-digest §5.2 cover example; C85: cover_len > 24 acts as 24, positions past the end
+/// TMC428 §9.2–§9.3: a cover datagram on the Table 11-2 configuration; C85: cover_len > 24 acts as 24, positions past the end
 /// are dropped.
 #[test]
 fn cover_datagram() {
@@ -97,7 +97,7 @@ fn cover_readback_and_cw() {
     assert_eq!(h.status() & 0x40, 0);
 }
 
-/// TMC428 §9.1, spec-digest §5.2: the 48-bit readback holds what SDI_S returned; C88: CDGW
+/// TMC428 §9.1: the 48-bit readback holds what SDI_S returned; C88: CDGW
 /// stays set after a datagram_low_word write until a datagram completes.
 #[test]
 fn readback_and_cdgw() {
@@ -119,6 +119,16 @@ fn readback_and_cdgw() {
     run_board(&mut h, 2000, [false; 3], [false; 3], 0xFFF_000_FFF, 36);
     assert_eq!(h.read(global_a7(1)), (s3 << 12 | 0xFFF) as u32);
     assert_eq!(h.read(global_a7(0)), 0x000FFF);
+    // [429] §8.2.1, [428] §9.1: "A write to one of these read-only registers initializes them,
+    // to update their contents with the next datagram received" (C87): both words read 0, and
+    // a 36-bit datagram then leaves the 12 bits above it at 0.
+    h.write(global_a7(1), 0xFFFFFF);
+    assert_eq!((h.read(global_a7(1)), h.read(global_a7(0))), (0, 0));
+    assert_ne!(h.status() & 0x40, 0, "CDGW armed");
+    request(&mut h);
+    run_board(&mut h, 2000, [false; 3], [false; 3], 0xABC_DEF_123, 36);
+    assert_eq!(h.status() & 0x40, 0);
+    assert_eq!((h.read(global_a7(1)), h.read(global_a7(0))), (0x000ABC, 0xDEF123));
 }
 
 /// C88: CDGW is set while a datagram is under way after the write and clears at its end.
@@ -173,38 +183,55 @@ fn sck_period() {
     }
 }
 
-/// Table 6-2: a 1-bit datagram at clk2_div 7 keeps the chip select active 8+8+16+8+8 = 48 CLK;
-/// 64 bits at clk2_div 255: 512 + 64·512 + 512 = 33792 CLK.
+/// [429] Table 11.2 ([428] Table 6-2): t_HDSCSdrv, from nSCS_S falling to the first falling
+/// SCK_S edge, is 8 / 16 / 256 CLK (min / typ / max: clk2_div 7 / 15 / 255), and so is the hold
+/// after the last bit's period; the datagram lasts 8+8+1·16+8+8 = 48 CLK (one bit, clk2_div 7)
+/// and 512 + 64·512 + 512 = 33792 CLK (64 bits, clk2_div 255), measured here as the period of
+/// back-to-back datagrams (chip select inactive t_SUSCSdrv after one and before the next, C82).
 #[test]
 fn datagram_length_limits() {
-    let (mut h, trace) = host_with_trace(Chip::Tmc428);
-    h.datagram(0x80000031); // cell 0: One with NxM
-    h.write(GCONF, gconf(0, 7, 0));
-    trace.lock().unwrap().clear();
-    request(&mut h);
-    h.wait(200);
-    let p = pulses(&trace.lock().unwrap(), |o| !o.nscs_s);
-    assert_eq!(p, vec![(p[0].0, 48)]);
-
-    let (mut h, trace) = host_with_trace(Chip::Tmc428);
-    for a in 0..32u8 {
-        let odd = if a == 31 { 0x31 } else { 0x11 };
-        h.write(ram_a7(a), odd << 8 | 0x10);
+    // (clk2_div, bits, t_HDSCSdrv, datagram length)
+    for (c, n, hd, len) in [(7u32, 1u8, 8u64, 48u64), (15, 1, 16, 96), (255, 64, 256, 33792)] {
+        let (mut h, trace) = host_with_trace(Chip::Tmc428);
+        for a in 0..32u8 {
+            // cells 2a, 2a+1: Zero, One; NxM on the cell of the last bit (n - 1)
+            let nxm = |cell: u8| if cell == n - 1 { 0x20 } else { 0 };
+            h.write(ram_a7(a), (0x11 | nxm(2 * a + 1)) << 8 | (0x10 | nxm(2 * a)));
+        }
+        h.write(GCONF, gconf(0, c, 0));
+        // HOLD mode at v = 2047: a step every 32 CLK keeps a datagram requested.
+        h.write(motor_a7(0, 10), 3);
+        trace.lock().unwrap().clear();
+        h.write(motor_a7(0, 5), 2047);
+        h.wait(4 * len + 200);
+        let t = trace.lock().unwrap();
+        let cs = pulses(&t, |o| !o.nscs_s);
+        assert!(cs.len() >= 3, "clk2_div {c}");
+        let sck_falls: Vec<u64> = t.windows(2).filter(|w| w[0].1.sck_s && !w[1].1.sck_s).map(|w| w[1].0).collect();
+        let sck_rises: Vec<u64> = t.windows(2).filter(|w| !w[0].1.sck_s && w[1].1.sck_s).map(|w| w[1].0).collect();
+        for &(start, active) in &cs[..cs.len() - 1] {
+            let first_fall = sck_falls.iter().find(|&&f| f > start).unwrap();
+            assert_eq!(first_fall - start, hd, "clk2_div {c}: t_HDSCSdrv");
+            let end = start + active;
+            let last_rise = sck_rises.iter().rev().find(|&&r| r < end).unwrap();
+            let hi = c as u64 + 1;
+            assert_eq!(end - last_rise, hi + hd, "clk2_div {c}: last bit's high half, then the hold");
+            assert_eq!(active, (n as u64 + 1) * 2 * hi, "clk2_div {c}: chip select active");
+        }
+        for w in cs.windows(2) {
+            assert_eq!(w[1].0 - w[0].0, len, "clk2_div {c}: datagram length");
+        }
     }
-    h.write(GCONF, gconf(0, 255, 0));
-    trace.lock().unwrap().clear();
-    request(&mut h);
-    h.wait(35_000);
-    let p = pulses(&trace.lock().unwrap(), |o| !o.nscs_s);
-    assert_eq!(p.len(), 1);
-    assert_eq!(p[0].1, 33792);
 }
 
-/// TMC428 §9.7: back-to-back datagrams of the 3×12 chain come every (1 + 39 + 1) SCK periods
-/// at clk2_div 7 (f_SCK/41), every 42 periods at clk2_div 15 (NxM 1.5 periods).
+/// [429] §8.2.5.3: NxM processing takes 1 SCK_S period at clk2_div 7 and 1.5 above; back-to-back
+/// datagrams of the 3×12 chain repeat every 36 + 2 + 2 = 40 periods at clk2_div 7 and every
+/// 36 + 2 + 3 = 41 at clk2_div 15: the Table 11.2 frame (C82) with the two NxM gaps between
+/// the drivers. (The section's f_SCK/41 at clk2_div 7 counts a period for the last driver's
+/// NxM too, one more than the table's one-bit sum leaves room for; the contract takes the table.)
 #[test]
 fn datagram_rate_when_busy() {
-    for (c, periods) in [(7u32, 41u64), (15, 42)] {
+    for (c, periods_x2) in [(7u32, 80u64), (15, 82)] {
         let (mut h, log) = host_with_events(Chip::Tmc429);
         load_tables(&mut h);
         h.write(GCONF, gconf(2, c, 0));
@@ -214,7 +241,7 @@ fn datagram_rate_when_busy() {
         let cy: Vec<u64> = chains(&log).iter().map(|e| e.0).collect();
         assert!(cy.len() > 10);
         for w in cy[2..].windows(2) {
-            assert_eq!(w[1] - w[0], periods * 2 * (c as u64 + 1), "clk2_div {c}");
+            assert_eq!(w[1] - w[0], periods_x2 * (c as u64 + 1), "clk2_div {c}");
         }
     }
 }
@@ -282,6 +309,44 @@ fn lsmd3_and_unused_codes() {
     request(&mut h);
     settle(&mut h, 10_000);
     assert_eq!(chains(&log).iter().map(|e| (e.1, e.2)).collect::<Vec<_>>(), vec![(14, 0x1FFF)]);
+}
+
+/// [429] §8.2.4 note: "After power-on, the TMC429 is in SPI mode. The output signals are logic
+/// high until they become configured for step/direction mode"; Fig. 11.1 draws SDO_S high
+/// before the first falling SCK_S edge and back high when nSCS_S rises (C2, C81).
+#[test]
+fn driver_outputs_high_until_configured_and_between_datagrams() {
+    for chip in [Chip::Tmc428, Chip::Tmc429] {
+        let c = tmc429_model::Tmc429::new(chip);
+        let o = c.outputs();
+        assert!(o.sdo_s && o.sck_s && o.nscs_s && o.nscs2 && o.nscs3, "{chip}: power-on levels {o:?}");
+        let (mut h, trace) = host_with_trace(chip);
+        load_tables(&mut h);
+        // One driver (LSMD 0): the datagram is cells 0..11 of Table 11-2, the last bit PH_B
+        // (cell 11, $2E): 1 at w = 0 (Table 12-3), 0 with polarity_ph_ab.
+        h.write(GCONF, gconf(0, 7, f::POL_PH_AB.put(1)));
+        trace.lock().unwrap().clear();
+        request(&mut h);
+        h.wait(400);
+        request(&mut h);
+        h.wait(400);
+        let t = trace.lock().unwrap();
+        assert_eq!(pulses(&t, |o| !o.nscs_s).len(), 2, "{chip}: two datagrams");
+        let mut lows = 0;
+        for w in t.windows(2) {
+            if w[0].1.nscs_s {
+                assert!(w[0].1.sdo_s, "{chip}: SDO_S high while nSCS_S is inactive (cycle {})", w[0].0);
+            }
+            if !w[0].1.nscs_s && !w[1].1.nscs_s && w[0].1.sck_s && !w[1].1.sck_s {
+                lows += 1;
+            }
+            // the last bit (PH_B = 0) holds until nSCS_S rises, then SDO_S is high
+            if !w[0].1.nscs_s && w[1].1.nscs_s {
+                assert!(!w[0].1.sdo_s && w[1].1.sdo_s, "{chip}: SDO_S returns high with nSCS_S");
+            }
+        }
+        assert_eq!(lows, 2 * 12, "{chip}: 12 bits per datagram");
+    }
 }
 
 /// TMC428 §9.7 polarity bits (C81).

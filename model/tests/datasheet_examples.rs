@@ -31,10 +31,11 @@ fn section_6_5_reply_with_int_set() {
     assert_eq!(h.datagram(0x1B00_0000), 0x9500_0123);
 }
 
-/// TMC428 §6.5: RAM write of %100001 to cell 126 and %100011 to cell 127, read back.
+/// TMC428 §6.5 and TMC4210 §5.2.3 (whose RAM is "writeable with read-back option", §5.3): RAM
+/// write of %100001 to cell 126 and %100011 to cell 127, read back (erratum E2: 32 bits).
 #[test]
 fn ram_example() {
-    for chip in [Chip::Tmc428, Chip::Tmc429] {
+    for chip in Chip::ALL {
         let mut h = host(chip);
         assert_eq!(h.datagram(0xFE00_2321), 0x1500_0000);
         assert_eq!(h.datagram(0xFF00_0000), 0x1500_2321);
@@ -43,7 +44,7 @@ fn ram_example() {
     }
 }
 
-/// TMC428 Table 11-3: the 18 datagrams that load the Table 11-2 configuration (spec-digest §5.2),
+/// TMC428 Table 11-3: the 18 datagrams that load the Table 11-2 configuration (TMC428 §11.2),
 /// then `$7E` with LSMD = 2; every word reads back.
 #[test]
 fn table_11_3_configuration_sequence() {
@@ -80,7 +81,7 @@ fn table_11_3_configuration_sequence() {
 }
 
 /// TMC428 Table 12-2: the 32 datagrams of the sine table, `word k = $C0000000 | (32+k)<<25 |
-/// y(2k+1)<<8 | y(2k)` (spec-digest §5.3), written and read back; first and last as printed.
+/// y(2k+1)<<8 | y(2k)` (y(i) of TMC428 §12), written and read back; first and last as printed.
 #[test]
 fn table_12_2_lut_sequence() {
     let words: Vec<u32> = (0..32u32)
@@ -107,12 +108,28 @@ fn tmc429_power_on_ram() {
     assert_eq!(h.read(0x60), 0x0200, "LUT[0..1] = 0, 2");
     assert_eq!(h.read(0x7F), 0x3F3F);
     assert_eq!(h.read(0x52), 0, "cells 36.. are 0");
+    // The LUT is the quarter sine y(i) of TMC429 §11.5 without an offset (C30: the "offset" of
+    // the power-on table is not published).
+    const Y: [u8; 64] = [
+        0, 2, 3, 5, 6, 8, 9, 11, 12, 14, 16, 17, 19, 20, 22, 23, 24, 26, 27, 29, 30, 32, 33, 34, 36, 37, 38, 39, 41, 42, 43, 44, 45, 46,
+        47, 48, 49, 50, 51, 52, 53, 54, 55, 56, 56, 57, 58, 59, 59, 60, 60, 61, 61, 62, 62, 62, 63, 63, 63, 63, 63, 63, 63, 63,
+    ];
+    for w in 0..32u8 {
+        let (even, odd) = (Y[2 * w as usize] as u32, Y[2 * w as usize + 1] as u32);
+        assert_eq!(h.read(0x60 | w), odd << 8 | even, "LUT word {w}");
+    }
+    // TMC4210 §5.3: "the on-chip RAM of the TMC4210 is initialized internally", with values it
+    // does not publish: the TMC429's (C30).
+    let mut h4210 = host(Chip::Tmc4210);
+    for a in 0..64u8 {
+        assert_eq!(h4210.read(0x40 | a), h.read(0x40 | a), "TMC4210 word {a}");
+    }
     let mut h = host(Chip::Tmc428);
     assert_eq!(h.read(0x40), 0);
     assert_eq!(h.read(0x7F), 0);
 }
 
-/// spec-digest §5.5: the pmulpdiv.c results (TMC429 §8.1.10.2.3), all columns.
+/// The results of the pmulpdiv.c program of TMC429 §8.1.10.2.3 (TMC428 §19), all columns.
 #[test]
 fn pmulpdiv_results() {
     #[rustfmt::skip]
@@ -148,7 +165,7 @@ fn pmulpdiv_results() {
     assert_eq!(pmulpdiv::calc(0, 0, 0, 0.05).register_value(), None);
 }
 
-/// spec-digest §5.6: the a_max limits of TMC428 §8.7.1 (errata E3, E10).
+/// The a_max limits of TMC428 §8.7.1 (errata E3, E10).
 #[test]
 fn a_max_limits() {
     let lim = |e: i32| {

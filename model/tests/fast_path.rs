@@ -83,3 +83,30 @@ fn fast_path_registers_a_position_compare_int() {
         assert_eq!(slow.probes(), *pr, "probes differ at cycle {n}");
     }
 }
+
+/// A ramp tick at rest after the is_v0 delay still selects is_v0 once is_agtat and is_aleat
+/// become > 0 (TMC429 §8.1.9 footnote *2, C75): the fast path must not skip it. Every motor in
+/// HOLD_MODE, so that the ramp ticks between µC writes are fast-path candidates.
+#[test]
+fn fast_path_keeps_the_rest_current_selection() {
+    let trace: Arc<Mutex<Vec<(Inputs, [u8; 3])>>> = Arc::default();
+    let mut h = host(Chip::Tmc429);
+    let t = trace.clone();
+    h.set_observer(Box::new(move |c: &Tmc429, i: &Inputs, _o: &Outputs| {
+        t.lock().unwrap().push((*i, [0, 1, 2].map(|m| c.current_scale(m).sel)))
+    }));
+    for m in 0..3 {
+        wr(&mut h, m, REF_CONF_RM, 3);
+        wr(&mut h, m, CURRENT, 1 << 12); // is_v0 only: is_aleat stays selected
+    }
+    h.wait(10_000);
+    wr(&mut h, 0, CURRENT, 7 << 20 | 7 << 16 | 1 << 12);
+    h.wait(1_000);
+    assert_eq!(h.chip().current_scale(0).sel, tmc429_model::current::SEL_V0);
+    let mut slow = Tmc429::new(Chip::Tmc429);
+    slow.set_fast_path(false);
+    for (n, (i, sel)) in trace.lock().unwrap().iter().enumerate() {
+        slow.tick(i);
+        assert_eq!([0, 1, 2].map(|m| slow.current_scale(m).sel), *sel, "selection differs at cycle {n}");
+    }
+}

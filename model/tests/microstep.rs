@@ -1,5 +1,5 @@
 //! Microstep unit and current scaling at pin level (TMC428 §8.9 Tables 8-1/8-2, §12 Tables
-//! 12-3/12-4, spec-digest §5.4; contract C70–C77). The sine/cosine DAC values, phase and
+//! 12-3/12-4 with erratum E5; contract C70–C77). The sine/cosine DAC values, phase and
 //! fast-decay bits are read from driver-chain datagrams on SDO_S.
 
 mod drv;
@@ -48,7 +48,7 @@ fn table_12_4(usrs: u32) -> Vec<(u8, u8, [bool; 4])> {
     let inc = 64u32 >> usrs.min(6);
     let n = 64 / inc;
     let rising: Vec<u8> = (0..n).map(|k| (k * inc) as u8).collect();
-    // 2nd quadrant sin: 63, then 64 − k·inc (the %101 row as corrected in spec-digest §5.4).
+    // 2nd quadrant sin: 63, then 64 − k·inc (the %101 row as corrected, erratum E5).
     let falling: Vec<u8> = std::iter::once(63u8).chain((1..n).map(|k| (64 - k * inc) as u8)).collect();
     // Table 12-3: PH_A, PH_B, FD_A, FD_B.
     let bits = [[true, true, false, true], [true, false, true, false], [false, false, false, true], [false, true, true, false]];
@@ -105,7 +105,7 @@ fn table_12_4_walks() {
     }
 }
 
-/// The %101 row starts its 2nd quadrant with 63, 62, 60, 58 (spec-digest §5.4 correction).
+/// The %101 row starts its 2nd quadrant with 63, 62, 60, 58 (Table 12-4 corrected, erratum E5).
 #[test]
 fn usrs5_second_quadrant() {
     let t = table_12_4(5);
@@ -133,30 +133,65 @@ fn usrs_change_keeps_offset() {
     assert_eq!(h.read(motor_a7(0, 15)), 129);
 }
 
+/// The datagram (start cycle, bits) of a request timed to start at edge `target` after
+/// power-on, with the current scaling register (IDX 8) written to `is` first. TMC429 power-on
+/// RAM, LSMD 0 (One DAC_A5..2 PH_A One DAC_B5..2 PH_B), w = 0: DAC_B = 63, so its bits 5..2
+/// show the scale (Table 8-1): %000 → 1111, %111 (7/8: 55) → 1101, %001 (1/8: 7) → 0001.
+fn datagram_at_edge(is: u32, target: u64) -> (u64, u64) {
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    h.write(GCONF, gconf(0, 7, 0));
+    h.write(motor_a7(0, 8), is);
+    // Calibrate the delay from a write to the datagram start (start = end − (8 + 12·16 + 8):
+    // t_HDSCSdrv, 12 bits, the hold, C82).
+    let c0 = h.cycle();
+    request(&mut h);
+    settle(&mut h, 2000);
+    let d = chains(&log)[0].0 - 208 - c0;
+    h.wait(target - d - h.cycle());
+    request(&mut h);
+    settle(&mut h, 2000);
+    let e = chains(&log)[1];
+    (e.0 - 208, e.2)
+}
+
 /// TMC428 §8.9: is_v0 only after 255 ramp ticks at rest (t = 255·32·2^ramp_div CLK). From
 /// power-on the 255th ramp tick of ramp_div 0 is edge 8159, so a datagram starting at edge 8160
-/// is the first with is_v0 (C75, C77). Datagram start = end − 14·16 (LSMD 0, 12 bits, C82).
+/// is the first with is_v0 (C75, C77).
 #[test]
 fn is_v0_after_255_ramp_ticks() {
-    // TMC429 power-on RAM, LSMD 0: One DAC_A5..2 PH_A One DAC_B5..2 PH_B; w = 0.
-    let run = |target: u64| -> (u64, u64) {
-        let (mut h, log) = host_with_events(Chip::Tmc429);
-        h.write(GCONF, gconf(0, 7, 0));
-        h.write(motor_a7(0, 8), 1 << 12); // is_v0 = %001 (1/8), the others %000 (1)
-                                          // Calibrate the delay from a write to the datagram start.
-        let c0 = h.cycle();
-        request(&mut h);
-        settle(&mut h, 2000);
-        let d = chains(&log)[0].0 - 224 - c0;
-        h.wait(target - d - h.cycle());
-        request(&mut h);
-        settle(&mut h, 2000);
-        let e = chains(&log)[1];
-        (e.0 - 224, e.2)
-    };
-    // DAC_B = 63 → CB = 1111; scaled 63·1/8 = 7 → CB = 0001.
-    assert_eq!(run(8159), (8159, 0x87F));
-    assert_eq!(run(8160), (8160, 0x863));
+    // is_agtat = is_aleat = %111 (7/8), is_v0 = %001 (1/8).
+    let is = 7 << 20 | 7 << 16 | 1 << 12;
+    assert_eq!(datagram_at_edge(is, 8159), (8159, 0x87B));
+    assert_eq!(datagram_at_edge(is, 8160), (8160, 0x863));
+}
+
+/// TMC429 §8.1.9, footnote *2 of the current scale selection scheme: "For selection of current
+/// scaling IS_V0 (at rest) IS_AGTAT and IS_ALEAT must be larger than 0." With either at 0 the
+/// motor at rest keeps is_aleat (C75); once both are > 0 the next ramp tick at rest selects is_v0.
+#[test]
+fn is_v0_needs_is_agtat_and_is_aleat_above_0() {
+    // is_agtat 0, is_aleat %111, is_v0 %001: 7/8 (1101) long after the delay.
+    assert_eq!(datagram_at_edge(7 << 16 | 1 << 12, 8160), (8160, 0x87B));
+    assert_eq!(datagram_at_edge(7 << 16 | 1 << 12, 20_000), (20_000, 0x87B));
+    // is_agtat %111, is_aleat 0 (= 100 %, Table 8-1), is_v0 %001: 1111.
+    assert_eq!(datagram_at_edge(7 << 20 | 1 << 12, 20_000), (20_000, 0x87F));
+    // the power-on values (all 0): is_aleat = %000, full current.
+    assert_eq!(datagram_at_edge(0, 20_000), (20_000, 0x87F));
+    // is_agtat written > 0 at rest: is_v0 from the next ramp tick (ramp_div 0: 32 CLK); with
+    // every motor in HOLD_MODE, where the ramp ticks between µC writes take the model's fast
+    // path.
+    let (mut h, log) = host_with_events(Chip::Tmc429);
+    h.write(GCONF, gconf(0, 7, 0));
+    for m in 0..3 {
+        h.write(motor_a7(m, 10), 3);
+    }
+    h.write(motor_a7(0, 8), 7 << 16 | 1 << 12);
+    h.wait(10_000);
+    h.write(motor_a7(0, 8), 7 << 20 | 7 << 16 | 1 << 12);
+    h.wait(64);
+    request(&mut h);
+    settle(&mut h, 2000);
+    assert_eq!(chains(&log).last().unwrap().2, 0x863);
 }
 
 /// Table 8-2: |a| > a_threshold → is_agtat, else is_aleat; a_threshold > 1023 → is_aleat.

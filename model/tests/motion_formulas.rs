@@ -51,7 +51,7 @@ fn velocity_mode_step_rate() {
     }
 }
 
-/// spec-digest §5.6: R at 16 MHz for (pd 0, v 2047), (pd 0, v 1), (pd 7, v 1000), measured.
+/// TMC429 §8.1.13.1: R at 16 MHz for (pd 0, v 2047), (pd 0, v 1), (pd 7, v 1000), measured.
 #[test]
 fn step_rate_examples() {
     for (pd, v, hz) in [(0u32, 2047i32, 499755.86), (0, 1, 244.14), (7, 1000, 1907.35)] {
@@ -90,7 +90,7 @@ fn velocity_slope() {
     }
 }
 
-/// spec-digest §5.6: ΔR at 16 MHz, a_max 1000: 476837158.2 Hz/s (pd = rd = 0), 29103.83 Hz/s (7, 7).
+/// TMC429 §8.1.13.1: ΔR at 16 MHz, a_max 1000: 476837158.2 Hz/s (pd = rd = 0), 29103.83 Hz/s (7, 7).
 #[test]
 fn velocity_slope_examples() {
     let dr = |pd: i32, rd: i32| FCLK * FCLK * 1000.0 / 2f64.powi(pd + rd + 29);
@@ -114,6 +114,6 @@ fn acceleration_distance() {
         let tol = v as f64 * 2f64.powi(rd as i32 - 11 - pd as i32) + 1.0;
         assert!(steps <= s + tol && steps >= s - tol - 2.0 * s / v as f64, "v {v} a {a_max} pd {pd} rd {rd}: {steps} steps, S = {s}");
     }
-    // spec-digest §5.6: v 1000, a_max 100, rd = pd = 7 → 625 steps.
+    // TMC429 §8.1.13.2: v 1000, a_max 100, rd = pd = 7 → 625 steps.
     assert_eq!(0.5 * 1000f64.powi(2) / 100.0 / 8.0, 625.0);
 }

@@ -10,17 +10,24 @@ use tmc429_model::Chip;
 const P_ONE: u32 = 0x8004;
 
 fn first_tick(rm: u32, dx: u32, v_min: u32, v_max: u32) -> u32 {
+    first_tick_with(rm, dx, v_min, v_max, 1, 0, 0)
+}
+
+/// v_target after the first ramp tick of a move of `dx` from 0 with a_max, pulse_div and
+/// ramp_div given.
+fn first_tick_with(rm: u32, dx: u32, v_min: u32, v_max: u32, a_max: u32, pulse_div: u32, ramp_div: u32) -> u32 {
     let mut h = host(Chip::Tmc428);
-    motion_setup(&mut h, 0, 0, 0, v_min, v_max, 1, P_ONE, rm);
+    motion_setup(&mut h, 0, pulse_div, ramp_div, v_min, v_max, a_max, P_ONE, rm);
     wr(&mut h, 0, X_TARGET, dx);
-    // One frame later a snapshot and a ramp tick have happened (C41).
+    // Two frames later a snapshot and a ramp tick have happened (C41).
     h.wait(64);
     rd(&mut h, 0, V_TARGET)
 }
 
 #[test]
 fn ramp_mode_square_root_law() {
-    // isqrt(p_mul·(|dx|−1)·2^8 >> pdiv) = isqrt(128·299·256/16) = isqrt(612352) = 782.
+    // (isqrt(Y) − h) >> 2, Y = p_mul·(|dx|−1)·2^12 >> pdiv = 128·299·4096/16 = 9797632,
+    // isqrt(Y) = 3130, h = ⌈a_max/128⌉ = 1 (pulse_div = ramp_div): 3129 >> 2 = 782.
     assert_eq!(first_tick(0, 300, 1, 2047), 782);
     // dx = 1 aims at standstill: v_min carries the motor over the last step.
     assert_eq!(first_tick(0, 1, 3, 2047), 3);
@@ -29,6 +36,27 @@ fn ramp_mode_square_root_law() {
     assert_eq!(first_tick(0, (-300i32) as u32 & 0xFF_FFFF, 1, 2047), (-782i32) as u32 & 0xFFF);
     // v_min > v_max: the clamp yields v_max (C50).
     assert_eq!(first_tick(0, 1, 40, 20), 20);
+}
+
+#[test]
+fn ramp_mode_aims_below_by_half_a_ramp_tick_of_deceleration() {
+    // a_max 2047: h = ⌈2047/128⌉ = 16, (3130 − 16) >> 2 = 778 (C50).
+    assert_eq!(first_tick_with(0, 300, 1, 2047, 2047, 0, 0), 778);
+    // ramp_div above pulse_div: the same h.
+    assert_eq!(first_tick_with(0, 300, 1, 2047, 2047, 0, 1), 778);
+    // ramp_div below pulse_div: the velocity holds less than a pulse tick, h = 0: 3130 >> 2.
+    assert_eq!(first_tick_with(0, 300, 1, 2047, 2047, 1, 0), 782);
+    // a_max 128: h = 1; a_max 129: h = 2, (3130 − 2) >> 2 = 782.
+    assert_eq!(first_tick_with(0, 300, 1, 2047, 129, 0, 0), 782);
+    // dx = 2: Y = 32768, isqrt(Y) = 181, a_max 2047: (181 − 16) >> 2 = 41.
+    assert_eq!(first_tick_with(0, 2, 1, 2047, 2047, 0, 0), 41);
+    // below h the law gives 0 and v_min carries the motor: dx = 2 with p_mul 128, pdiv 13:
+    // Y = 128·4096 >> 13 = 64, isqrt(Y) = 8 < h = 16.
+    let mut hs = host(Chip::Tmc428);
+    motion_setup(&mut hs, 0, 0, 0, 2, 2047, 2047, 0x800D, 0);
+    wr(&mut hs, 0, X_TARGET, 2);
+    hs.wait(64);
+    assert_eq!(rd(&mut hs, 0, V_TARGET), 2);
 }
 
 #[test]

@@ -36,8 +36,10 @@ proptest! {
         for op in ops {
             match op {
                 Op::Datagram(d) => {
+                    // the TMC4210 has no SDOZ_C: with sdo_int its replies reach no pin (C90)
+                    let muted = chip == Chip::Tmc4210 && h.chip().global().ifc(tmc429_model::regmap::f::SDO_INT);
                     let r = h.datagram(d);
-                    if (d >> 24) & 1 == 0 {
+                    if (d >> 24) & 1 == 0 && !muted {
                         prop_assert_eq!(r & 0xFF_FFFF, 0, "write replies carry 24 zero bits");
                     }
                 }

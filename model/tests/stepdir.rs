@@ -185,6 +185,9 @@ fn power_down_freezes_a_pulse() {
     c.write_register(motor_a7(0, 10), 3);
     c.write_register(motor_a7(0, 5), 100);
     let idle = Inputs::default();
+    // The pins take the Step/Dir levels at the next edge (SDO_S is high in SPI mode, C2).
+    c.tick(&idle);
+    assert!(!c.outputs().sdo_s, "S1 inactive");
     let mut n = 0;
     while !c.outputs().sdo_s {
         c.tick(&idle);
@@ -241,4 +244,52 @@ fn backlog_beyond_the_pulse_rate() {
         assert!(w[1].0 - (w[0].0 + w[0].1) >= 256);
     }
     assert!(tr.iter().all(|(_, o)| !o.sck_s), "no backward pulse: DIR stays low");
+}
+
+/// TMC429 §8.2.4 note: "REFMUX does not work in Step/Dir mode because the SPI signal nSCS_S is
+/// not available. The output is signal S2 (step2) in Step/Dir mode." The model (C87): with
+/// refmux = 1 the switches are the values the 74HC157 sampling stored while datagrams were
+/// sent; in Step/Dir mode nothing is sampled (S2 pulses are no chip select), so they keep the
+/// last SPI-mode sample — 0 if there was none — and the REF pins do not reach them.
+#[test]
+fn refmux_in_step_dir_mode_holds_the_last_sample() {
+    let (mut h, _log) = host_with_events(Chip::Tmc429);
+    load_tables(&mut h);
+    h.write(GCONF, gconf(2, 7, f::REFMUX.put(1)));
+    // SPI mode: a datagram samples left = (1, 0, 1) (presented while nSCS_S is high),
+    // right = (0, 1, 0) (while low).
+    {
+        let p = h.pins_mut();
+        p.ref1 = true;
+        p.ref3 = true;
+    }
+    h.wait(10);
+    request(&mut h);
+    run_board(&mut h, 1000, [true, false, true], [false, true, false], 0, 0);
+    let sampled = h.read(global_a7(14));
+    assert_eq!(sampled, 0b10_0110, "r1 0, l1 1, r2 1, l2 0, r3 0, l3 1");
+    // Step/Dir mode, motor 2 stepping negative (S2 = nSCS_S pulses; its sampled right switch
+    // r2 is active, its left switch l2 not): the REF pins change, the switches keep the sample.
+    h.write(IF_CONF, f::EN_SD.put(1));
+    h.write(motor_a7(1, 10), 3);
+    h.write(motor_a7(1, 5), (-500i32) as u32 & 0xFFF);
+    for levels in [[false; 3], [true; 3], [false, true, false]] {
+        let p = h.pins_mut();
+        p.ref1 = levels[0];
+        p.ref2 = levels[1];
+        p.ref3 = levels[2];
+        h.wait(5000);
+        assert_eq!(h.read(global_a7(14)), sampled, "REF pins {levels:?}");
+    }
+    assert!((h.chip().motor(1).x_actual as i32) << 8 >> 8 < -100, "motor 2 stepped (S2 pulses)");
+    // From power-on straight into Step/Dir with refmux = 1: nothing was ever sampled.
+    let (mut h, _log) = host_with_events(Chip::Tmc429);
+    h.write(GCONF, gconf(0, 7, f::REFMUX.put(1)));
+    h.write(IF_CONF, f::EN_SD.put(1));
+    let p = h.pins_mut();
+    p.ref1 = true;
+    p.ref2 = true;
+    p.ref3 = true;
+    h.wait(100);
+    assert_eq!(h.read(global_a7(14)), 0);
 }

@@ -123,21 +123,37 @@ fn soft_stop_right() {
     assert_eq!(ticks, 1000, "1000·256 / a_max 256 ramp ticks");
 }
 
-/// C61: dx_ref_tolerance masks the reference switch (REF_RnL-selected) near position 0.
+/// C61: DX_REF_TOLERANCE "disables automatic stopping by a switch around the origin" (TMC429
+/// §8.1.14) and the definition of the reference switch by ref_RnL "has no effect on the stop
+/// function of the reference switches" (§8.1.11.2): the window |x_actual| < dx_ref_tolerance
+/// masks the stop of the left and of the right switch, whatever ref_RnL.
 #[test]
 fn reference_tolerance() {
-    let mut h = host(Chip::Tmc428);
-    wr(&mut h, 0, DX_REF_TOL, 100);
-    wr(&mut h, 0, X_ACTUAL, 50);
-    velocity_mode(&mut h, 0, -200, 2047);
-    set_refs(&mut h, true, false, false);
-    h.wait(20_000);
-    let x = s24(h.chip().motor(0).x_actual);
-    assert!(x < 50, "moved through the switch inside the window: {x}");
-    // It stops once |x_actual| ≥ 100 (the window is |x| < dx_ref_tolerance).
-    h.wait(2_000_000);
-    assert_eq!(s24(h.chip().motor(0).x_actual), -100);
-    assert_eq!(h.chip().motor(0).v, 0);
+    // (ref_RnL, moving right on REFR1) → the stop position: the first |x| ≥ 100 on the way.
+    for (rnl, right) in [(false, false), (true, false), (false, true), (true, true)] {
+        let mut h = host(Chip::Tmc429);
+        h.write(global_a7(4), 0x100); // en_refr: R1 = REFR1
+        {
+            let p = h.pins_mut();
+            p.refr1 = false;
+        }
+        wr(&mut h, 0, DX_REF_TOL, 100);
+        let start = if right { -50i32 } else { 50 };
+        wr(&mut h, 0, X_ACTUAL, start as u32 & 0xFF_FFFF);
+        velocity_mode(&mut h, 0, if right { 200 } else { -200 }, 2047);
+        wr(&mut h, 0, REF_CONF_RM, (rnl as u32) << 11 | 2);
+        if right {
+            h.pins_mut().refr1 = true;
+        } else {
+            set_refs(&mut h, true, false, false);
+        }
+        h.wait(20_000);
+        let x = s24(h.chip().motor(0).x_actual);
+        assert!(x.abs() < 100 && x != start, "rnl {rnl} right {right}: moved through the switch inside the window: {x}");
+        h.wait(2_000_000);
+        assert_eq!(s24(h.chip().motor(0).x_actual), if right { 100 } else { -100 }, "rnl {rnl} right {right}");
+        assert_eq!(h.chip().motor(0).v, 0);
+    }
 }
 
 /// C62: the latch takes x_actual on either edge of the reference switch while lp = 1 and the
@@ -163,6 +179,33 @@ fn latch_on_both_edges() {
         assert!(latched >= x_at_edge && latched <= x_at_edge + 1, "latched {latched}, at edge {x_at_edge}");
         assert_ne!(latched, 0);
     }
+}
+
+/// TMC429 §8.1.15: "An event at the reference switch ... takes effect only during motion (when
+/// V_ACTUAL ≠ 0)": with 0 < |V| < 256 (V_ACTUAL = 0, C42) an edge of the switch does not latch;
+/// at |V| ≥ 256 it does (C62).
+#[test]
+fn latch_only_while_v_actual_is_not_0() {
+    let mut h = host(Chip::Tmc428);
+    // VELOCITY_MODE to v_target 1 with a_max 1: V grows by 1/256 per ramp tick (32 CLK).
+    motion_setup(&mut h, 0, 0, 0, 0, 2047, 1, 0, 2);
+    wr(&mut h, 0, REF_CONF_RM, 0x0102); // the left switch does not stop
+    wr(&mut h, 0, X_LATCHED, 0);
+    wr(&mut h, 0, V_TARGET, 1);
+    h.wait(100 * 32);
+    let v = h.chip().motor(0).v;
+    assert!(v > 0 && v < 256, "V = {v}");
+    assert_eq!(rd(&mut h, 0, V_ACTUAL), 0);
+    set_refs(&mut h, true, false, false);
+    h.wait(3);
+    assert_eq!(rd(&mut h, 0, REF_CONF_RM) >> 16, 1, "no latch while V_ACTUAL = 0: lp still 1");
+    h.wait(300 * 32);
+    assert_eq!(rd(&mut h, 0, V_ACTUAL), 1);
+    let x = h.chip().motor(0).x_actual;
+    set_refs(&mut h, false, false, false);
+    h.wait(3);
+    assert_eq!(rd(&mut h, 0, REF_CONF_RM) >> 16, 0, "latched while V_ACTUAL = 1");
+    assert_eq!(rd(&mut h, 0, X_LATCHED), x);
 }
 
 /// C63: REF_WRONG (switch active outside the window) and REF_MISS (position 0 with the switch

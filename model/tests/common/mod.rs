@@ -5,6 +5,8 @@ use tmc429_model::host::Host;
 use tmc429_model::regmap::{global_a7, motor_a7};
 use tmc429_model::Chip;
 
+pub mod frames;
+
 pub use tmc429_model::regmap::idx::*;
 /// Short name of idx::CURRENT_SCALING.
 pub const CURRENT: u8 = CURRENT_SCALING;
