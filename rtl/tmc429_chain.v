@@ -4,11 +4,14 @@
 // One state machine with one down-counter `cnt` (edges left in the state). Frame of one
 // datagram (C82), LO/HI = SCK_S low/high half periods, P = LO + HI, G = NxM gap (C81):
 //
-//   IDLE --request--> SETUP (CS active, SCK high, P edges)
+//   IDLE --request--> SETUP (CS active, SCK high, HI edges: t_HDSCSdrv)
 //     -> LOW (bit on SDO_S, SCK low, LO edges) -> HIGH (SCK high, SDI_S shifted into the
 //        readback at its first edge, HI edges) -> next bit, or GAP (NxM, motor < LSMD,
-//        G edges, motor + 1) -> next bit, or HOLD (NxM, motor = LSMD, CS active, P edges)
-//     -> CSOFF (CS inactive, P edges) -> next datagram in the same edge, or IDLE
+//        G edges, motor + 1) -> next bit, or HOLD (NxM, motor = LSMD, CS active, HI edges)
+//     -> CSOFF (CS inactive, SDO_S high, P edges) -> next datagram in the same edge, or IDLE
+//
+// Readback (C87): SDI_S shifts in at each rising SCK_S edge; a datagram_low/high_word write
+// (`readback_clr`) initializes the 48 bits to 0.
 //
 // Start edge (C80, C85, C88): snapshot of each motor's full-wave index, current scale,
 // direction and step flag (step flags since the last start included) and of the three
@@ -36,6 +39,7 @@
 // SCK high, motor 0), so that the start is the last input of the pin levels.
 // Same function as tmc429_model::chain::Chain.
 `default_nettype none
+`include "tmc429_regmap.vh"
 
 module tmc429_chain (
     input  wire        clk,
@@ -58,6 +62,7 @@ module tmc429_chain (
     input  wire        cont_update_nx, // cont_update of the new state (after this edge's write)
     input  wire        cw,             // cover datagram waiting
     input  wire        dgw,            // datagram_low/high_word write waiting (C88)
+    input  wire        readback_clr,   // a datagram_low/high_word write executes: readback := 0 (C87)
     input  wire [5:0]  cover_pos,
     input  wire [4:0]  cover_len,
     input  wire [23:0] cover_datagram,
@@ -153,7 +158,10 @@ module tmc429_chain (
         .bit_out(sig_bit));
 
     assign ram_re   = run & spi_mode & (rd_cfg | rd_lut);
-    assign ram_addr = rd_cfg ? {1'b0, cfg_cell} : {1'b1, lut_idx};
+    // RAM cell = 2 * word + half: the driver configuration's cells, then the sine table's (C80)
+    localparam [6:0] CELL_CFG = {`TMC429_ADDR_RAM_DRIVER_CONFIG, 1'b0};
+    localparam [6:0] CELL_LUT = {`TMC429_ADDR_RAM_MICROSTEP_TABLE, 1'b0};
+    assign ram_addr = rd_cfg ? (CELL_CFG | {1'b0, cfg_cell}) : (CELL_LUT | {1'b0, lut_idx});
 
     // ---- cover (C85): positions cover_pos <= k < cover_pos + len carry data[len-1-(k-pos)];
     // decided at cnt = 2 (bits does not change before the LOW entry)
@@ -195,7 +203,7 @@ module tmc429_chain (
                     state_n = IDLE;  cnt_n = 10'd0;  cidx_n = 6'd0;  motor_ns = 2'd0;  bits_n = 7'd0;
                     req_n = 1'b0;  stepped_n = 3'd0;  nxm_n = 1'b0;
                     cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
-                    cs_ns = 1'b0;  sck_ns = 1'b1;  sdo_n = 1'b0;
+                    cs_ns = 1'b0;  sck_ns = 1'b1;  sdo_n = 1'b1;
                 end
             end else begin
                 start = can_start & request;
@@ -221,7 +229,7 @@ module tmc429_chain (
                     HIGH: begin
                         if (nxm) begin
                             if (motor >= lsmd_e) begin
-                                state_n = HOLD;  cnt_n = t_p;
+                                state_n = HOLD;  cnt_n = {1'b0, t_hi};
                             end else begin
                                 motor_ns = motor + 2'd1;  cidx_n = cidx + 6'd1;
                                 state_n = GAP;  cnt_n = t_gap;  shift = 1'b1;
@@ -233,8 +241,9 @@ module tmc429_chain (
                         end
                     end
                     HOLD: begin
-                        // end of the datagram: CS inactive, CDGW handshake done (C87, C88)
-                        cs_ns = 1'b0;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
+                        // end of the datagram: CS inactive, SDO_S back high (C81), CDGW
+                        // handshake done (C87, C88)
+                        cs_ns = 1'b0;  sdo_n = 1'b1;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
                         state_n = CSOFF;  cnt_n = t_p;
                     end
                     default: begin
@@ -248,13 +257,16 @@ module tmc429_chain (
                     cover_busy_n = cw;  dgw_busy_n = dgw;
                     req_n = 1'b0;  stepped_n = 3'd0;
                     cidx_n = 6'd0;  bits_n = 7'd0;
-                    state_n = SETUP;  cnt_n = t_p;
+                    state_n = SETUP;  cnt_n = {1'b0, t_hi};
                 end else begin
                     req_n = request;
                     stepped_n = stepped | step;
                 end
             end
         end
+        // a µC write wins over the shift of the same edge (C3, C87); also while powered down
+        if (readback_clr)
+            readback_n = 48'd0;
     end
 
     // a start sets CS active, SCK high and motor 0; the pin registers (tmc429_drvpins)
@@ -269,7 +281,7 @@ module tmc429_chain (
             can_start <= 1'b1;
             req <= 1'b0;  stepped <= 3'd0;  nxm <= 1'b0;
             cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
-            cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b0;
+            cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b1;
             cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;  cupd_top <= 3'd0;
             ramp_tick <= 3'd0;  cont_update <= 1'b0;  wrap <= 1'b0;
         end else begin

@@ -3,9 +3,9 @@
 //
 // At each ramp tick of the motor (`tick`, C40), from the old state: moving (V != 0) selects
 // is_agtat when a_threshold <= 1023 and |a_actual| > a_threshold, else is_aleat, and clears
-// the rest counter; at rest the 8-bit counter counts up to 255 and is_v0 is selected when it
-// reaches 255 (the previous selection holds while it counts). Between ramp ticks the
-// selection holds. Power-on: is_aleat, counter 0. `i_scale` is the selected register value
+// the rest counter; at rest the 8-bit counter counts up to 255 and from then on is_v0 is
+// selected if is_agtat and is_aleat are both > 0 (TMC429 §8.1.9 footnote *2), else is_aleat
+// (the previous selection holds while it counts). Between ramp ticks the selection holds. Power-on: is_aleat, counter 0. `i_scale` is the selected register value
 // of the current state. Same function as tmc429_model::current::CurrentScale.
 `default_nettype none
 
@@ -42,7 +42,7 @@ module tmc429_current (
                 if (v0_count != 8'd255)
                     v0_count <= v0_count + 8'd1;
                 if (v0_count >= 8'd254)          // the count reaches 255 now (or is there)
-                    sel <= SEL_V0;
+                    sel <= (|is_agtat & |is_aleat) ? SEL_V0 : SEL_ALEAT;
             end
         end
     end

@@ -103,7 +103,7 @@ module tmc429_drvpins #(
 
     always @(posedge clk) begin
         if (rst) begin
-            nscs_s <= 1'b1;  sck_s <= 1'b1;  sdo_s <= (CHIP == 2);
+            nscs_s <= 1'b1;  sck_s <= 1'b1;  sdo_s <= 1'b1;
             sdi_s_o <= 1'b0;  sdi_s_oe <= 1'b0;  nscs2 <= 1'b1;  nscs3 <= 1'b1;
             nscs_prev <= 1'b1;  smp_en <= 1'b0;  smp_ref <= 3'd0;  mux_sw_r <= 6'd0;
         end else begin

@@ -7,8 +7,10 @@
 // registers the motion core uses every cycle, the read mux of the state and the interrupt
 // conditions, events and flags. The read value of a register that only the µC writes comes
 // from the register file's shadow RAM (tmc429_regfile); v_max, p_mul and pdiv, which only
-// the target velocity unit reads, live in its parameter RAM alone (tmc429_vtarget).
+// the target velocity unit reads, live in its parameter RAM alone (tmc429_vtarget). Register
+// indices and fields: rtl/tmc429_regmap.vh.
 `default_nettype none
+`include "tmc429_regmap.vh"
 
 module tmc429_motor_regs #(
     parameter CHIP = 1
@@ -35,6 +37,7 @@ module tmc429_motor_regs #(
     output reg  [1:0]  rm,
     output reg  [3:0]  pulse_div,
     output reg  [3:0]  ramp_div,
+    output wire [4:0]  brake_h,   // ⌈a_max/128⌉ if ramp_div >= pulse_div, else 0 (C50)
     // motion state (probes)
     output wire [23:0] x_actual,
     output wire [19:0] v,
@@ -44,11 +47,12 @@ module tmc429_motor_regs #(
     output wire [10:0] pulse_acc,
     output wire        step,
     output wire        dir,
-    // driver side (C75): {is_agtat, is_aleat, is_v0, a_threshold}
-    output wire [19:0] drv_conf
+    // driver side (C75): current_scaling as a read shows it (is_agtat, is_aleat, is_v0,
+    // a_threshold at their TMC429_F_* bits)
+    output reg  [23:0] drv_conf
 );
-    reg [10:0] v_min, a_max, a_threshold;
-    reg [2:0]  is_agtat, is_aleat, is_v0, usrs;
+    reg [10:0] v_min, a_max;
+    reg [2:0]  usrs;
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
     reg [11:0] dx_ref_tolerance;
@@ -59,11 +63,11 @@ module tmc429_motor_regs #(
     wire [11:0] v_actual;     // formed once for all motors in the read path (tmc429_regfile)
     /* verilator lint_on UNUSEDSIGNAL */
 
-    localparam HAS_IDX8  = (CHIP != 2);   // TMC4210: no current scaling register
-    localparam HAS_IDX15 = (CHIP != 0);   // TMC428: IDX 15 unused
+    localparam HAS_CUR_SCALE = `TMC429_HAS(`TMC429_CHIPS_CURRENT_SCALING, CHIP);   // TMC4210: absent
+    localparam HAS_USTEP     = `TMC429_HAS(`TMC429_CHIPS_USTEP_COUNT, CHIP);       // TMC428: unused
 
     // ---- ramp and pulse generator, switch stop, latch ------------------------------------
-    tmc429_ramp #(.HAS_USTEP(HAS_IDX15)) u_ramp (
+    tmc429_ramp #(.HAS_USTEP(HAS_USTEP)) u_ramp (
         .clk(clk), .rst(rst), .run(run), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
         .rm(rm), .x_target(x_target), .v_min(v_min), .a_max(a_max), .ref_conf(ref_conf),
         .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .tol_k(tol_k), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
@@ -73,7 +77,7 @@ module tmc429_motor_regs #(
         .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .v_actual(v_actual));
 
     // ---- interrupt conditions (C63), from the old state -------------------------------
-    wire        sel_sw   = ref_conf[3] ? sw_r : sw_l;          // REF_RnL selects the switch
+    wire        sel_sw   = ref_conf[`TMC429_F_REF_RNL - `TMC429_F_DISABLE_STOP_L] ? sw_r : sw_l;   // REF_RnL
     wire        x_ge_tol = ~tol_ok;                             // |x_actual| >= tolerance
     wire [7:0]  cond = {
         sw_r,                       // 7 STOP_RIGHT_HIGH
@@ -87,11 +91,13 @@ module tmc429_motor_regs #(
     };
     wire [7:0] events = run ? (cond & ~int_hist) : 8'd0;
 
-    wire       w_int   = we & (widx == 4'd11);
-    wire [7:0] mask_nx = w_int ? wdata[15:8] : int_mask;
-    wire [7:0] w1c     = w_int ? wdata[7:0] : 8'd0;
+    wire       w_int   = we & (widx == `TMC429_IDX_INTERRUPT);
+    wire [7:0] mask_nx = w_int ? wdata[`TMC429_F_INTERRUPT_MASK] : int_mask;
+    wire [7:0] w1c     = w_int ? wdata[`TMC429_F_INTERRUPT_FLAGS] : 8'd0;
 
-    assign drv_conf = {is_agtat, is_aleat, is_v0, a_threshold};
+    // the braking law's correction for the velocity held between ramp ticks (C50)
+    assign brake_h  = (ramp_div >= pulse_div) ? ({1'b0, a_max[10:7]} + {4'd0, a_max[6:0] != 7'd0})
+                                              : 5'd0;
     assign irq  = int_flags != 8'd0;
 
     always @(posedge clk) begin
@@ -99,7 +105,7 @@ module tmc429_motor_regs #(
             x_target <= 24'd0;
             v_min <= 11'd0;
             a_max <= 11'd0;
-            is_agtat <= 3'd0;   is_aleat <= 3'd0;  is_v0 <= 3'd0;  a_threshold <= 11'd0;
+            drv_conf <= `TMC429_RESET_CURRENT_SCALING;
             ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
             int_hist <= 8'b0011_0101;   // the conditions of the reset state: no event at power-on
@@ -113,27 +119,27 @@ module tmc429_motor_regs #(
             int_flags <= ((int_flags & ~w1c) | events) & mask_nx;   // C3, C26
             if (we) begin
                 case (widx)
-                4'd0:  x_target <= wdata;
-                4'd2:  v_min <= wdata[10:0];
-                4'd6:  a_max <= wdata[10:0];
-                4'd8:  if (HAS_IDX8) begin
-                           is_agtat <= wdata[22:20];
-                           is_aleat <= wdata[18:16];
-                           is_v0 <= wdata[14:12];
-                           a_threshold <= wdata[10:0];
+                `TMC429_IDX_X_TARGET: x_target <= wdata[`TMC429_F_X_TARGET];
+                `TMC429_IDX_V_MIN:    v_min <= wdata[`TMC429_F_V_MIN];
+                `TMC429_IDX_A_MAX:    a_max <= wdata[`TMC429_F_A_MAX];
+                `TMC429_IDX_CURRENT_SCALING:
+                       if (HAS_CUR_SCALE) drv_conf <= wdata & `TMC429_WMASK_CURRENT_SCALING;
+                `TMC429_IDX_REF_CONF_RM: begin   // ref_conf: REF_RnL, SOFT_STOP, DISABLE_STOP_R, _L
+                           ref_conf <= wdata[`TMC429_F_REF_RNL:`TMC429_F_DISABLE_STOP_L];
+                           rm <= wdata[`TMC429_F_RM];
                        end
-                4'd10: begin ref_conf <= wdata[11:8]; rm <= wdata[1:0]; end
-                4'd12: begin
-                           pulse_div <= wdata[15:12];
-                           ramp_div <= wdata[11:8];
-                           usrs <= wdata[2:0];
+                `TMC429_IDX_CLK_CONFIG: begin
+                           pulse_div <= wdata[`TMC429_F_PULSE_DIV];
+                           ramp_div <= wdata[`TMC429_F_RAMP_DIV];
+                           usrs <= wdata[`TMC429_F_USRS];
                        end
-                4'd13: begin
-                           dx_ref_tolerance <= wdata[11:0];
-                           tol_k <= 13'd4096 - {1'b0, wdata[11:0]};
+                `TMC429_IDX_DX_REF_TOLERANCE: begin
+                           dx_ref_tolerance <= wdata[`TMC429_F_DX_REF_TOLERANCE];
+                           tol_k <= 13'd4096 - {1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]};
                        end
-                // IDX 1, 4, 5, 14, 15: motion state in tmc429_ramp; IDX 3, 9: parameter
-                // RAM of tmc429_vtarget; IDX 7 (a_actual) and 11 (above): no storage here
+                // x_actual, v_target, v_actual, x_latched, ustep_count: motion state in
+                // tmc429_ramp; v_max, pmul_pdiv: parameter RAM of tmc429_vtarget; a_actual and
+                // interrupt (above): no storage here
                 default: ;
                 endcase
             end
@@ -141,16 +147,16 @@ module tmc429_motor_regs #(
     end
 
     // read value of the state (C21-C27); the bits a µC write sets come from the shadow RAM
-    // of the register file and are 0 here (IDX 10: lp only; IDX 11: int_flags only). The IDX
-    // is one-hot, so the multiplexer is an AND-OR.
-    // v_actual (IDX 5, C42) is formed in the register file from V of the selected motor
-    assign rdata = ({24{rsel[1]}} & x_actual)
-                 | ({24{rsel[4]}} & {12'd0, v_target})
-                 | ({24{rsel[7]}} & {12'd0, a_actual})
-                 | ({24{rsel[10]}} & {7'd0, lp, 16'd0})
-                 | ({24{rsel[11]}} & {16'd0, int_flags})
-                 | ({24{rsel[14]}} & x_latched)
-                 | ({24{rsel[15] & (HAS_IDX15 != 0)}} & {16'd0, ustep});
+    // of the register file and are 0 here (ref_conf_rm: lp only; interrupt: int_flags only).
+    // The IDX is one-hot, so the multiplexer is an AND-OR.
+    // v_actual (C42) is formed in the register file from V of the selected motor
+    assign rdata = ({24{rsel[`TMC429_IDX_X_ACTUAL]}} & x_actual)
+                 | ({24{rsel[`TMC429_IDX_V_TARGET]}} & {12'd0, v_target})
+                 | ({24{rsel[`TMC429_IDX_A_ACTUAL]}} & {12'd0, a_actual})
+                 | ({24{rsel[`TMC429_IDX_REF_CONF_RM]}} & ({23'd0, lp} << `TMC429_F_LP))
+                 | ({24{rsel[`TMC429_IDX_INTERRUPT]}} & {16'd0, int_flags})
+                 | ({24{rsel[`TMC429_IDX_X_LATCHED]}} & x_latched)
+                 | ({24{rsel[`TMC429_IDX_USTEP_COUNT] & (HAS_USTEP != 0)}} & {16'd0, ustep});
 endmodule
 
 `default_nettype wire

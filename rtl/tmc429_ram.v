@@ -18,9 +18,10 @@
 // synchronous with a read enable: `rdata2` is the cell as it was before the last edge with
 // `re2` (a write in that edge is not seen). The ROM is a case table read synchronously, so
 // it maps to block RAM as well (rom_style).
-// ROM (CHIP = 1, TMC429): cells 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD
-// positions (TMC429 §11.4.2), cells 36..63 = 0, cells 64..127 = the sine table of TMC428
-// Table 12-2, y(i) = min(63, int(1/2 + 64 sin(pi i / 128))). CHIP = 0, 2: all 0.
+// ROM (CHIP = 1, TMC429, and CHIP = 2, TMC4210, whose contents are not published): cells
+// 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD positions (TMC429 §11.4.2), cells
+// 36..63 = 0, cells 64..127 = the sine table of TMC428 Table 12-2, y(i) = min(63, int(1/2 +
+// 64 sin(pi i / 128))). CHIP = 0 (TMC428): all 0.
 `default_nettype none
 
 module tmc429_ram #(
@@ -48,7 +49,7 @@ module tmc429_ram #(
     reg  [5:0]  sw_a;
     reg  [11:0] rom_q;
     always @(posedge clk) begin
-        rom_q <= (CHIP == 1) ? rom_word(sw_c[5:0]) : 12'h000;
+        rom_q <= (CHIP != 0) ? rom_word(sw_c[5:0]) : 12'h000;
         sw_a  <= sw_c[5:0];
     end
     always @(posedge clk) begin
@@ -143,7 +144,7 @@ module tmc429_ram #(
     reg        w1;
     always @(posedge clk) begin
         q1 <= mem1[raddr];
-        rom1 <= (CHIP == 1) ? rom_word(raddr) : 12'h000;
+        rom1 <= (CHIP != 0) ? rom_word(raddr) : 12'h000;
     end
     always @(posedge clk) begin
         if (rst)
@@ -170,7 +171,7 @@ module tmc429_ram #(
             a2 <= raddr2;
         end
     end
-    wire [11:0] word2 = w2 ? q2 : ((CHIP == 1) ? rom_word(a2[6:1]) : 12'h000);
+    wire [11:0] word2 = w2 ? q2 : ((CHIP != 0) ? rom_word(a2[6:1]) : 12'h000);
     assign rdata2 = a2[0] ? word2[11:6] : word2[5:0];
 endmodule
 

@@ -8,8 +8,8 @@
 // the unit are taken (rtl/README.md).
 //
 // Per cycle with run = 1, from the old state:
-//   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol_L, stop_R
-//                  symmetric; tol only for the REF_RnL-selected switch, |x_actual| < tolerance
+//   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol, stop_R
+//                  symmetric; tol = |x_actual| < dx_ref_tolerance masks both switches
 //   stop flops     stop_hard := at_stop (RAMP/SOFT, x_actual = x_target, |V|>>8 <= v_min, C52)
 //                  | (stop & !SOFT_STOP); stop_soft := stop & SOFT_STOP (C61): the conditions
 //                  of this cycle act in the next one
@@ -18,12 +18,14 @@
 //   V := 0         while stop_hard; wins over the ramp tick (C3)
 //   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is one
 //                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
-//   latch (C62)    lp & V != 0 & selected switch changed: x_latched := x_actual, lp := 0
-// µC writes (we, widx, wdata; any run level) take priority over all of these (C3).
+//   latch (C62)    lp & V_ACTUAL != 0 & selected switch changed: x_latched := x_actual, lp := 0
+// µC writes (we, widx, wdata; any run level) take priority over all of these (C3); register
+// indices and fields: rtl/tmc429_regmap.vh.
 `default_nettype none
+`include "tmc429_regmap.vh"
 
 module tmc429_ramp #(
-    parameter HAS_USTEP = 1       // IDX 15 ustep_count writable (TMC429, TMC4210)
+    parameter HAS_USTEP = 1       // ustep_count writable (TMC429, TMC4210)
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -77,6 +79,8 @@ module tmc429_ramp #(
     reg         v_mc;            // = v_neg & (V[7:0] == 0), formed with V's next state
     // sign(V) * (|V| >> 8): V >> 8 rounded toward 0
     assign v_actual = v[19:8] + {11'd0, v_neg & ~v_mc};
+    // V_ACTUAL != 0 without the adder: |V| >> 8 = v_mx + v_mc is 0 only when both are 0
+    wire        va_nz  = (|v_mx) | v_mc;
 
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
     wire        x_hi0 = x_actual[23:12] == 12'h000;
@@ -89,13 +93,18 @@ module tmc429_ramp #(
     /* verilator lint_on UNUSEDSIGNAL */
     assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_kd[13]);
 
-    wire rnl      = ref_conf[3];
-    wire soft_sw  = ref_conf[2];
+    // ref_conf is bits REF_RnL..DISABLE_STOP_L of ref_conf_rm
+    localparam RC_L = 0;
+    localparam RC_R = `TMC429_F_DISABLE_STOP_R - `TMC429_F_DISABLE_STOP_L;
+    localparam RC_SOFT = `TMC429_F_SOFT_STOP - `TMC429_F_DISABLE_STOP_L;
+    localparam RC_RNL = `TMC429_F_REF_RNL - `TMC429_F_DISABLE_STOP_L;
+    wire rnl      = ref_conf[RC_RNL];
+    wire soft_sw  = ref_conf[RC_SOFT];
     wire vt_zero  = vt == 12'd0;
     wire mov_neg  = v_neg | (v_zero & vt[11]);
     wire mov_pos  = (~v_neg & ~v_zero) | (v_zero & ~vt[11] & ~vt_zero);
-    wire stop_l   = ~ref_conf[0] & sw_l & mov_neg & (rnl | ~tol_ok);
-    wire stop_r   = ~ref_conf[1] & sw_r & mov_pos & (~rnl | ~tol_ok);
+    wire stop_l   = ~ref_conf[RC_L] & sw_l & mov_neg & ~tol_ok;
+    wire stop_r   = ~ref_conf[RC_R] & sw_r & mov_pos & ~tol_ok;
     assign stop   = stop_l | stop_r;
     wire sel      = rnl ? sw_r : sw_l;
 
@@ -160,12 +169,12 @@ module tmc429_ramp #(
     wire [7:0]  u_stp = ustep + inc;
 
     // ---- µC writes (C3, C23) ------------------------------------------------------------------
-    wire        w_x   = we & (widx == 4'd1);
-    wire        w_vt  = we & (widx == 4'd4);
-    wire        w_va  = we & (widx == 4'd5);
-    wire        w_lp  = we & (widx == 4'd14);
-    wire        w_us  = we & (widx == 4'd15) & (HAS_USTEP != 0);
-    wire [11:0] w_v   = (wdata[11:0] == 12'h800) ? 12'h801 : wdata[11:0];
+    wire        w_x   = we & (widx == `TMC429_IDX_X_ACTUAL);
+    wire        w_vt  = we & (widx == `TMC429_IDX_V_TARGET);
+    wire        w_va  = we & (widx == `TMC429_IDX_V_ACTUAL);
+    wire        w_lp  = we & (widx == `TMC429_IDX_X_LATCHED);
+    wire        w_us  = we & (widx == `TMC429_IDX_USTEP_COUNT) & (HAS_USTEP != 0);
+    wire [11:0] w_v   = (wdata[`TMC429_F_V_ACTUAL] == 12'h800) ? 12'h801 : wdata[`TMC429_F_V_ACTUAL];
 
     always @(posedge clk) begin
         if (rst) begin
@@ -178,7 +187,7 @@ module tmc429_ramp #(
                 ref_prev <= sel;
                 stop_hard <= at_stop | (stop & ~soft_sw);
                 stop_soft <= stop & soft_sw;
-                if (lp & ~v_zero & (sel != ref_prev)) begin
+                if (lp & va_nz & (sel != ref_prev)) begin
                     x_latched <= x_actual;
                     lp <= 1'b0;
                 end
@@ -203,14 +212,14 @@ module tmc429_ramp #(
                     dir <= v_neg;
                 end
             end
-            if (w_x)  x_actual <= wdata;
-            if (w_vt) v_target <= wdata[11:0];
+            if (w_x)  x_actual <= wdata[`TMC429_F_X_ACTUAL];
+            if (w_vt) v_target <= wdata[`TMC429_F_V_TARGET];
             if (w_va) begin
                 v <= {w_v, 8'd0};
                 v_mc <= w_v[11];
             end
             if (w_lp) lp <= 1'b1;
-            if (w_us) ustep <= wdata[7:0];
+            if (w_us) ustep <= wdata[`TMC429_F_USTEP_COUNT];
         end
     end
 endmodule

@@ -9,7 +9,9 @@
 // schedule (C40, C41): the shared target velocity unit (tmc429_vtarget) and, per motor, the
 // registers with the ramp and pulse generator (tmc429_motor_regs, tmc429_ramp). Per CHIP
 // (0 TMC428, 1 TMC429, 2 TMC4210) the registers a variant lacks read 0 and ignore writes (C21).
+// Register indices, fields and presence per variant: rtl/tmc429_regmap.vh.
 `default_nettype none
+`include "tmc429_regmap.vh"
 
 module tmc429_regfile #(
     parameter CHIP = 1
@@ -47,11 +49,12 @@ module tmc429_regfile #(
     output wire [23:0] drv_gconf_wd,   // $7E as that write stores it
     output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
     output wire [8:0]  drv_ifconf_nx,
-    output wire [59:0] drv_conf,       // motor m in [20m+19:20m]: {is_*, a_threshold}
+    output wire [71:0] drv_conf,       // motor m in [24m+23:24m]: its current_scaling
     output wire [2:0]  drv_ramp_tick,  // phase 30 of a ramp frame of motor m (not gated by run)
     output wire [2:0]  drv_ramp_tick_nx, // drv_ramp_tick of the next edge (its register's input)
     output wire        drv_cw,         // cover datagram waiting
     output wire        drv_dgw,        // datagram-word write waiting
+    output wire        drv_dw_write,   // a datagram_low/high_word write executes in this edge
     output wire [5:0]  drv_cover_pos,
     output wire [4:0]  drv_cover_len,
     output wire [23:0] drv_cover_datagram,
@@ -67,17 +70,27 @@ module tmc429_regfile #(
     input  wire [6:0]  chain_ram_addr,
     output wire [5:0]  chain_ram_q
 );
-    localparam HAS_CHAIN = (CHIP != 2);   // JDX 0..3 (driver chain), TMC4210: absent
-    localparam HAS_429   = (CHIP != 0);   // JDX 4, 5, 6, 9
-    localparam HAS_RAM   = (CHIP != 2);   // TMC4210: no driver chain, no RAM
+    localparam HAS_CHAIN = `TMC429_HAS(`TMC429_CHIPS_DATAGRAM_LOW_WORD, CHIP);   // JDX 0..3 (driver chain)
+    localparam HAS_429   = `TMC429_HAS(`TMC429_CHIPS_IF_CONFIGURATION, CHIP);   // JDX 4, 5, 6, 9
+    // global_parameters in the TMC4210's layout (C31: STPDIV and mot1r only)
+    localparam GCONF_4210 = `TMC429_HAS(`TMC4210_CHIPS_GLOBAL_PARAMETERS, CHIP);
+    localparam NMOT      = `TMC429_MOTORS(CHIP);   // TMC4210: one motor
+    localparam [23:0] GCONF_WMASK = GCONF_4210 ? `TMC4210_WMASK_GLOBAL_PARAMETERS
+                                               : `TMC429_WMASK_GLOBAL_PARAMETERS;
+    localparam [23:0] GCONF_RST = GCONF_4210 ? `TMC4210_RESET_GLOBAL_PARAMETERS
+                                             : `TMC429_RESET_GLOBAL_PARAMETERS;
+
+    localparam [2:0] NMOT3 = NMOT;
 
     // ---- datagram decode ------------------------------------------------------------
-    wire [6:0]  a7    = cmd[31:25];
-    wire        wr    = exec & ~cmd[24];
-    wire [23:0] wdata = cmd[23:0];
-    wire        wr_g  = wr & (a7[6:4] == 3'b011);       // global register
-    wire [3:0]  jdx   = a7[3:0];
-    wire        wr_ram = wr & a7[6] & HAS_RAM;
+    wire [6:0]  a7    = cmd[`TMC429_DG_A7];
+    wire        wr    = exec & ~cmd[`TMC429_DG_RW];
+    wire [23:0] wdata = cmd[`TMC429_DG_DATA];
+    wire        wr_g  = wr & ~a7[`TMC429_A7_RRS] & (a7[`TMC429_A7_SMDA] == `TMC429_SMDA_GLOBAL);
+    wire [3:0]  jdx   = a7[`TMC429_A7_IDX];
+    wire        wr_ram = wr & a7[`TMC429_A7_RRS];
+    wire        wr_reg = wr & ~a7[`TMC429_A7_RRS];                      // one of the 64 registers
+    wire        wr_mot = wr_reg & ({1'b0, a7[`TMC429_A7_SMDA]} < NMOT3); // of a motor the variant has
 
     // ---- global registers -----------------------------------------------------------
     reg        dw;             // datagram waiting (JDX 0/1 write), CDGW
@@ -100,14 +113,15 @@ module tmc429_regfile #(
     wire [2:0] sw_l, sw_r;
     tmc429_refsw #(.CHIP(CHIP)) u_refsw (
         .ref_q(ref_q), .refr_q(refr_q),
-        .inv_ref(if_conf[0]), .en_refr(if_conf[8]), .refmux(refmux), .mot1r(mot1r),
+        .inv_ref(if_conf[`TMC429_F_INV_REF]), .en_refr(if_conf[`TMC429_F_EN_REFR]),
+        .refmux(refmux), .mot1r(mot1r),
         .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
 
     // ---- frame schedule (C40, C41) ----------------------------------------------------
     // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. The ticks
     // are registers formed one edge ahead: the phase after this edge is p + run, the frame
     // does not change from phase 29 to 30 or 30 to 31 (nor while powered down), and the
-    // divider after this edge is the one a µC write of IDX 12 in this edge stores.
+    // divider after this edge is the one a µC write of clk_config in this edge stores.
     wire [14:0] frame = prescaler[19:5];
     reg  [3:0]  ones_d;
     integer k;
@@ -120,7 +134,7 @@ module tmc429_regfile #(
     // power_down after this edge (C66): set by a write of it, else cleared by the waking frame
     // start. The ticks include run of the edge after (powered down the core has no tick).
     wire [4:0] ph      = prescaler[4:0];
-    wire pd_nx       = (wr_g & (jdx == 4'd8)) | (pd & ~frame_start);
+    wire pd_nx       = (wr_g & (jdx == `TMC429_JDX_POWER_DOWN)) | (pd & ~frame_start);
     wire ph_ramp_nx  = ~pd_nx & (run ? (ph == 5'd29) : (ph == 5'd30));
     wire ph_pulse_nx = ~pd_nx & (run ? (ph == 5'd30) : (ph == 5'd31));
 
@@ -140,25 +154,25 @@ module tmc429_regfile #(
             rq_ram <= 1'b0;  rq_glb <= 1'b0;  rq_va <= 1'b0;  rq_mot <= 3'd0;  rq_idx <= 16'd0;
             rq_rst <= 24'd0;
         end else begin
-            rq_ram <= rd_addr[6];
-            rq_glb <= rd_addr[5:4] == 2'd3;
-            rq_mot <= {(rd_addr[5:4] == 2'd2) & (CHIP != 2), (rd_addr[5:4] == 2'd1) & (CHIP != 2),
-                       rd_addr[5:4] == 2'd0};
+            rq_ram <= rd_addr[`TMC429_A7_RRS];
+            rq_glb <= rd_addr[`TMC429_A7_SMDA] == `TMC429_SMDA_GLOBAL;
+            for (j = 0; j < 3; j = j + 1)
+                rq_mot[j] <= (rd_addr[`TMC429_A7_SMDA] == j[1:0]) & (j < NMOT);
             for (j = 0; j < 16; j = j + 1)
-                rq_idx[j] <= rd_addr[3:0] == j[3:0];
-            rq_va  <= (rd_addr[5:4] != 2'd3) & (rd_addr[3:0] == 4'd5);
-            rq_rst <= sh_rst(rd_addr[5:0]);
+                rq_idx[j] <= rd_addr[`TMC429_A7_IDX] == j[3:0];
+            rq_va  <= (rd_addr[`TMC429_A7_SMDA] != `TMC429_SMDA_GLOBAL)
+                    & (rd_addr[`TMC429_A7_IDX] == `TMC429_IDX_V_ACTUAL);
+            rq_rst <= sh_rst(rd_addr[`TMC429_A7_REG]);
         end
     end
 
     // ---- motors -----------------------------------------------------------------------
     wire [71:0] m_rdata;      // read data of motor m in [24m+23:24m]
     wire [2:0]  xeqt, irq;
-    wire        m_present1 = (CHIP != 2);
-    localparam  NMOT = (CHIP == 2) ? 1 : 3;
 
     wire [5:0]  m_rm;
     wire [11:0] m_pulse_div, m_ramp_div;
+    wire [14:0] m_brake_h;
     wire [35:0] m_vt;
     reg  [2:0]  ramp_tick, pulse_tick;
     wire [2:0]  ramp_tick_nx;
@@ -168,10 +182,11 @@ module tmc429_regfile #(
     genvar g;
     generate
         for (g = 0; g < 3; g = g + 1) begin : mot
-            wire present = (g == 0) | m_present1;
-            wire w_div = wr & present & (a7[6:4] == g) & (jdx == 4'd12);
-            wire [3:0] rdiv_nx = w_div ? wdata[11:8] : m_ramp_div[4*g+3:4*g];
-            wire [3:0] pdiv_nx = w_div ? wdata[15:12] : m_pulse_div[4*g+3:4*g];
+            wire present = g < NMOT;
+            wire we_m  = wr_mot & (a7[`TMC429_A7_SMDA] == g);
+            wire w_div = we_m & (jdx == `TMC429_IDX_CLK_CONFIG);
+            wire [3:0] rdiv_nx = w_div ? wdata[`TMC429_F_RAMP_DIV] : m_ramp_div[4*g+3:4*g];
+            wire [3:0] pdiv_nx = w_div ? wdata[`TMC429_F_PULSE_DIV] : m_pulse_div[4*g+3:4*g];
             assign ramp_tick_nx[g] = ph_ramp_nx & (ones_d >= rdiv_nx);
             always @(posedge clk) begin
                 if (rst) begin
@@ -184,7 +199,7 @@ module tmc429_regfile #(
             end
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & present),
-                .we(wr & present & (a7[6:4] == g)), .widx(a7[3:0]), .wdata(wdata),
+                .we(we_m), .widx(jdx), .wdata(wdata),
                 .rsel(rq_idx), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
                 .ramp_tick(ramp_tick[g]),
@@ -193,11 +208,12 @@ module tmc429_regfile #(
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
                 .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
+                .brake_h(m_brake_h[5*g+4:5*g]),
                 .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]),
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
                 .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
                 .step(p_step[g]), .dir(p_dir[g]),
-                .drv_conf(drv_conf[20*g+19:20*g]));
+                .drv_conf(drv_conf[24*g+23:24*g]));
         end
     endgenerate
 
@@ -205,15 +221,15 @@ module tmc429_regfile #(
     tmc429_vtarget #(.NMOT(NMOT)) u_vt (
         .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
         .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
-        .v_target(p_v_target),
-        .cfg_we(wr & ~a7[6] & (a7[5:4] != 2'd3) & ((a7[5:4] == 2'd0) | m_present1)),
-        .cfg_m(a7[5:4]), .cfg_idx(jdx), .cfg_data(wdata[14:0]),
+        .v_target(p_v_target), .brake_h(m_brake_h),
+        .cfg_we(wr_mot), .cfg_m(a7[`TMC429_A7_SMDA]), .cfg_idx(jdx),
+        .cfg_data(wdata[`TMC429_F_PMUL_MSB - 1:0]),   // every bit v_min, v_max, pmul_pdiv store
         .vt(m_vt));
 
     // ---- position compare (C65) -------------------------------------------------------
     reg [23:0] pc_x;
     always @(*) begin
-        case (if_conf[7:6])
+        case (if_conf[`TMC429_F_POS_COMP_SEL])
         2'd0:    pc_x = p_x_actual[23:0];
         2'd1:    pc_x = p_x_actual[47:24];
         default: pc_x = p_x_actual[71:48];   // 3 selects motor 3 as well
@@ -221,11 +237,11 @@ module tmc429_regfile #(
     end
     wire pc_match = HAS_429 && (pc_x == pos_comp);
     wire pc_event = run & pc_match & ~pc_hist;
-    wire w_pcint  = wr_g & HAS_429 & (jdx == 4'd6);
-    wire pc_m_nx  = w_pcint ? wdata[8] : pc_m;
-    wire pc_w1c   = w_pcint & wdata[0];
+    wire w_pcint  = wr_g & HAS_429 & (jdx == `TMC429_JDX_POS_COMP_INT);
+    wire pc_m_nx  = w_pcint ? wdata[`TMC429_F_POS_COMP_INT_M] : pc_m;
+    wire pc_w1c   = w_pcint & wdata[`TMC429_F_POS_COMP_INT_I];
 
-    assign sdo_int = HAS_429 && if_conf[1];
+    assign sdo_int = HAS_429 && if_conf[`TMC429_F_SDO_INT];
     assign int_o   = (|irq) | (pc_i & pc_m);
     // RSn = Ln ([429] §6.2.2.2, C60)
 `ifdef PLANT_BUG_STATUS
@@ -239,17 +255,20 @@ module tmc429_regfile #(
     assign status  = {int_o, cdgw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
 
     // ---- driver side ------------------------------------------------------------------
-    wire w_gconf  = wr_g & (jdx == 4'd15);
-    wire w_ifconf = wr_g & HAS_429 & (jdx == 4'd4);
-    assign drv_gconf     = {2'd0, mot1r, refmux, 3'd0, cont_update, clk2_div, gp_low};
+    wire w_gconf  = wr_g & (jdx == `TMC429_JDX_GLOBAL_PARAMETERS);
+    wire w_ifconf = wr_g & HAS_429 & (jdx == `TMC429_JDX_IF_CONFIGURATION);
+    assign drv_gconf     = ({23'd0, mot1r} << `TMC429_F_MOT1R) | ({23'd0, refmux} << `TMC429_F_REFMUX)
+                         | ({23'd0, cont_update} << `TMC429_F_CONT_UPDATE)
+                         | ({16'd0, clk2_div} << `TMC429_F_CLK2_DIV_LSB) | {16'd0, gp_low};
     assign drv_gconf_we  = w_gconf;
-    assign drv_gconf_wd  = (CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
-                                       : {2'd0, wdata[21:20], 3'd0, wdata[16:0]};
+    assign drv_gconf_wd  = wdata & GCONF_WMASK;
     assign drv_gconf_nx  = w_gconf ? drv_gconf_wd : drv_gconf;
     assign drv_ifconf    = if_conf;
-    assign drv_ifconf_nx = w_ifconf ? wdata[8:0] : if_conf;
+    assign drv_ifconf_nx = w_ifconf ? wdata[`TMC429_F_EN_REFR:`TMC429_F_INV_REF] : if_conf;
     assign drv_cw        = cw;
     assign drv_dgw       = dw;
+    assign drv_dw_write  = wr_g & HAS_CHAIN & ((jdx == `TMC429_JDX_DATAGRAM_LOW_WORD)
+                                        | (jdx == `TMC429_JDX_DATAGRAM_HIGH_WORD));
     assign drv_cover_pos = cover_pos;
     assign drv_cover_len = cover_len;
     // cover_datagram (C85) is used only by the chain's start edge, which copies it: it lives
@@ -259,7 +278,7 @@ module tmc429_regfile #(
     reg         cov_late;
     wire [23:0] cov_q;
     wire        cov_wq;
-    wire        w_cover = wr_g & HAS_CHAIN & (jdx == 4'd3);
+    wire        w_cover = wr_g & HAS_CHAIN & (jdx == `TMC429_JDX_COVER_DATAGRAM);
     tmc429_wram #(.AW(1), .DW(24), .WMASK(2'b01)) u_cover (
         .clk(clk), .rst(rst),
         .we(w_cover), .waddr(1'b0), .wdata(wdata),
@@ -269,10 +288,10 @@ module tmc429_regfile #(
     always @(posedge clk) begin
         if (rst) begin
             dw <= 1'b0;  cw <= 1'b0;
-            cover_pos <= 6'd0;  cover_len <= 5'd0;  cov_late <= 1'b0;
+            cover_pos <= 6'd63;  cover_len <= 5'd0;  cov_late <= 1'b0;   // stored +1 = 0 (C29)
             if_conf <= 9'd0;  pos_comp <= 24'd0;
             pc_i <= 1'b0;  pc_m <= 1'b0;  pc_hist <= HAS_429;   // match holds at reset
-            gp_low <= 8'd0;  clk2_div <= 8'd15;
+            gp_low <= 8'd0;  clk2_div <= GCONF_RST[`TMC429_F_CLK2_DIV];
             cont_update <= 1'b0;  refmux <= 1'b0;  mot1r <= 1'b0;
             pd <= 1'b0;
             prescaler <= 20'd0;
@@ -299,24 +318,26 @@ module tmc429_regfile #(
             end
             if (wr_g) begin
                 case (jdx)
-                4'd0, 4'd1: if (HAS_CHAIN) dw <= 1'b1;    // datagram_low/high: arm CDGW
-                4'd2: if (HAS_CHAIN) begin
-                          cover_pos <= wdata[13:8];
-                          cover_len <= wdata[4:0];
+                `TMC429_JDX_DATAGRAM_LOW_WORD, `TMC429_JDX_DATAGRAM_HIGH_WORD:
+                      if (HAS_CHAIN) dw <= 1'b1;    // arm CDGW
+                `TMC429_JDX_COVER_POS_LEN: if (HAS_CHAIN) begin
+                          cover_pos <= wdata[`TMC429_F_COVER_POS];
+                          cover_len <= wdata[`TMC429_F_COVER_LEN];
                       end
-                4'd3: if (HAS_CHAIN) cw <= 1'b1;    // the datagram: u_cover
-                4'd4: if (HAS_429) if_conf <= wdata[8:0];
-                4'd5: if (HAS_429) pos_comp <= wdata;
-                // 4'd8: power_down, pd_nx
-                4'd15: begin
-                          mot1r <= wdata[21];
-                          if (CHIP == 2) begin
-                              clk2_div[3:0] <= wdata[11:8];   // C31: STPDIV only
+                `TMC429_JDX_COVER_DATAGRAM: if (HAS_CHAIN) cw <= 1'b1;    // the datagram: u_cover
+                `TMC429_JDX_IF_CONFIGURATION:
+                      if (HAS_429) if_conf <= wdata[`TMC429_F_EN_REFR:`TMC429_F_INV_REF];
+                `TMC429_JDX_POS_COMP: if (HAS_429) pos_comp <= wdata;
+                // power_down: pd_nx
+                `TMC429_JDX_GLOBAL_PARAMETERS: begin
+                          mot1r <= wdata[`TMC429_F_MOT1R];
+                          if (GCONF_4210) begin
+                              clk2_div[3:0] <= wdata[`TMC429_F_STPDIV];   // C31: STPDIV only
                           end else begin
-                              gp_low <= wdata[7:0];
-                              clk2_div <= wdata[15:8];
-                              cont_update <= wdata[16];
-                              refmux <= wdata[20];
+                              gp_low <= wdata[`TMC429_F_CS_COM_IND:`TMC429_F_LSMD_LSB];
+                              clk2_div <= wdata[`TMC429_F_CLK2_DIV];
+                              cont_update <= wdata[`TMC429_F_CONT_UPDATE];
+                              refmux <= wdata[`TMC429_F_REFMUX];
                           end
                       end
                 default: ;
@@ -329,7 +350,8 @@ module tmc429_regfile #(
     wire [11:0] ram_rdata;
     tmc429_ram #(.CHIP(CHIP)) u_ram (
         .clk(clk), .rst(rst),
-        .we(wr_ram), .waddr(a7[5:0]), .wdata({wdata[13:8], wdata[5:0]}),
+        .we(wr_ram), .waddr(a7[`TMC429_A7_ADDR]),
+        .wdata({wdata[`TMC429_F_RAM_ODD], wdata[`TMC429_F_RAM_EVEN]}),
         .raddr(rd_addr_q), .rdata(ram_rdata),
         .re2(chain_ram_re), .raddr2(chain_ram_addr), .rdata2(chain_ram_q));
 
@@ -343,41 +365,50 @@ module tmc429_regfile #(
     // variant lacks) have no "written" flag and read the reset value; the state registers
     // (x_actual, v_target, v_actual, a_actual, lp, int_flags, x_latched, ustep_count, pc_i,
     // cw, readback, switches) are ORed in from the combinational mux below.
-    localparam [15:0] MOT_W = (CHIP == 2) ? 16'b0011_1110_0100_1101   // IDX 0,2,3,6,9..13
-                                          : 16'b0011_1111_0100_1101;  // and 8
-    localparam [15:0] GLB_W = (CHIP == 0) ? 16'b1000_0000_0000_1100   // JDX 2, 3, 15
-                            : (CHIP == 2) ? 16'b1000_0000_0111_0000   // JDX 4, 5, 6, 15
-                                          : 16'b1000_0000_0111_1100;
-    localparam [63:0] SH_W = {GLB_W, (CHIP == 2) ? 32'd0 : {MOT_W, MOT_W}, MOT_W};
+    localparam [15:0] MOT_SH = (16'd1 << `TMC429_IDX_X_TARGET) | (16'd1 << `TMC429_IDX_V_MIN)
+                             | (16'd1 << `TMC429_IDX_V_MAX) | (16'd1 << `TMC429_IDX_A_MAX)
+                             | (16'd1 << `TMC429_IDX_CURRENT_SCALING) | (16'd1 << `TMC429_IDX_PMUL_PDIV)
+                             | (16'd1 << `TMC429_IDX_REF_CONF_RM) | (16'd1 << `TMC429_IDX_INTERRUPT)
+                             | (16'd1 << `TMC429_IDX_CLK_CONFIG) | (16'd1 << `TMC429_IDX_DX_REF_TOLERANCE);
+    localparam [15:0] GLB_SH = (16'd1 << `TMC429_JDX_COVER_POS_LEN) | (16'd1 << `TMC429_JDX_COVER_DATAGRAM)
+                             | (16'd1 << `TMC429_JDX_IF_CONFIGURATION) | (16'd1 << `TMC429_JDX_POS_COMP)
+                             | (16'd1 << `TMC429_JDX_POS_COMP_INT) | (16'd1 << `TMC429_JDX_GLOBAL_PARAMETERS);
+    // of those, the ones the variant has
+    localparam [15:0] MOT_W = MOT_SH & `TMC429_IDX_PRESENT(CHIP);
+    localparam [15:0] GLB_W = GLB_SH & `TMC429_JDX_PRESENT(CHIP);
+    localparam [63:0] SH_W = {GLB_W, (NMOT == 1) ? 32'd0 : {MOT_W, MOT_W}, MOT_W};
 
-    // the read value of register a7[5:0] after a write of wdata
-    wire [3:0] sh_idx = a7[3:0];
-    wire       sh_glb = a7[5:4] == 2'd3;
+    // the read value of the register a7 addresses after a write of wdata
+    wire [3:0] sh_idx = a7[`TMC429_A7_IDX];
+    wire       sh_glb = a7[`TMC429_A7_SMDA] == `TMC429_SMDA_GLOBAL;
     reg [23:0] sh_wdata;
     always @(*) begin
         sh_wdata = 24'd0;
         if (!sh_glb) begin
             case (sh_idx)
-            4'd0:  sh_wdata = wdata;                                        // x_target
-            4'd2, 4'd3, 4'd6: sh_wdata = {13'd0, wdata[10:0]};              // v_min, v_max, a_max
-            4'd8:  sh_wdata = {1'b0, wdata[22:20], 1'b0, wdata[18:16], 1'b0, wdata[14:12],
-                               1'b0, wdata[10:0]};
-            4'd9:  sh_wdata = {8'd0, 1'b1, wdata[14:8], 4'd0, wdata[3:0]};  // C22: bit 15 reads 1
-            4'd10: sh_wdata = {12'd0, wdata[11:8], 6'd0, wdata[1:0]};       // ref_conf, rm (lp: state)
-            4'd11: sh_wdata = {8'd0, wdata[15:8], 8'd0};                    // int_mask (flags: state)
-            4'd12: sh_wdata = {8'd0, wdata[15:8], 5'd0, wdata[2:0]};
-            4'd13: sh_wdata = {12'd0, wdata[11:0]};
+            `TMC429_IDX_X_TARGET:  sh_wdata = wdata & `TMC429_WMASK_X_TARGET;
+            `TMC429_IDX_V_MIN:     sh_wdata = wdata & `TMC429_WMASK_V_MIN;
+            `TMC429_IDX_V_MAX:     sh_wdata = wdata & `TMC429_WMASK_V_MAX;
+            `TMC429_IDX_A_MAX:     sh_wdata = wdata & `TMC429_WMASK_A_MAX;
+            `TMC429_IDX_CURRENT_SCALING: sh_wdata = wdata & `TMC429_WMASK_CURRENT_SCALING;
+            `TMC429_IDX_PMUL_PDIV: sh_wdata = (wdata & `TMC429_WMASK_PMUL_PDIV)
+                                            | (24'd1 << `TMC429_F_PMUL_MSB);   // C22: bit 15 reads 1
+            `TMC429_IDX_REF_CONF_RM: sh_wdata = wdata & `TMC429_WMASK_REF_CONF_RM;   // lp: state
+            `TMC429_IDX_INTERRUPT: sh_wdata = wdata & `TMC429_WMASK_INTERRUPT;       // flags: state
+            `TMC429_IDX_CLK_CONFIG: sh_wdata = wdata & `TMC429_WMASK_CLK_CONFIG;
+            `TMC429_IDX_DX_REF_TOLERANCE: sh_wdata = wdata & `TMC429_WMASK_DX_REF_TOLERANCE;
             default: ;
             endcase
         end else begin
             case (sh_idx)
-            4'd2:  sh_wdata = {10'd0, wdata[13:8] + 6'd1, 3'd0, wdata[4:0]};  // cover_pos + 1, len
-            4'd3:  sh_wdata = wdata;                                          // cover_datagram
-            4'd4:  sh_wdata = {15'd0, wdata[8:0]};                            // if_configuration
-            4'd5:  sh_wdata = wdata;                                          // pos_comp
-            4'd6:  sh_wdata = {15'd0, wdata[8], 8'd0};                        // pc mask (pc_i: state)
-            default: sh_wdata = (CHIP == 2) ? {2'd0, wdata[21], 9'd0, wdata[11:8], 8'd0}
-                                            : {2'd0, wdata[21:20], 3'd0, wdata[16:0]};
+            `TMC429_JDX_COVER_POS_LEN:          // cover_pos reads back + 1 (C29); cw: state
+                sh_wdata = ({18'd0, wdata[`TMC429_F_COVER_POS] + 6'd1} << `TMC429_F_COVER_POS_LSB)
+                         | ({19'd0, wdata[`TMC429_F_COVER_LEN]} << `TMC429_F_COVER_LEN_LSB);
+            `TMC429_JDX_COVER_DATAGRAM:   sh_wdata = wdata & `TMC429_WMASK_COVER_DATAGRAM;
+            `TMC429_JDX_IF_CONFIGURATION: sh_wdata = wdata & `TMC429_WMASK_IF_CONFIGURATION;
+            `TMC429_JDX_POS_COMP:         sh_wdata = wdata & `TMC429_WMASK_POS_COMP;
+            `TMC429_JDX_POS_COMP_INT:     sh_wdata = wdata & `TMC429_WMASK_POS_COMP_INT;   // I: state
+            default: sh_wdata = wdata & GCONF_WMASK;                                        // global_parameters
             endcase
         end
     end
@@ -387,14 +418,13 @@ module tmc429_regfile #(
         input [5:0] a;
         begin
             sh_rst = 24'd0;
-            if (a[5:4] != 2'd3) begin
-                if (a[3:0] == 4'd9 && (a[5:4] == 2'd0 || CHIP != 2))
-                    sh_rst = 24'h008000;
+            if (a[`TMC429_A7_SMDA] != `TMC429_SMDA_GLOBAL) begin
+                if (a[`TMC429_A7_IDX] == `TMC429_IDX_PMUL_PDIV && {1'b0, a[`TMC429_A7_SMDA]} < NMOT3)
+                    sh_rst = `TMC429_RESET_PMUL_PDIV;
             end else begin
-                case (a[3:0])
-                4'd2:  sh_rst = (CHIP != 2) ? 24'h000100 : 24'd0;
-                4'd9:  sh_rst = (CHIP != 0) ? 24'h429101 : 24'd0;
-                4'd15: sh_rst = 24'h000F00;
+                case (a[`TMC429_A7_IDX])
+                `TMC429_JDX_TYPE_VERSION:  sh_rst = HAS_429 ? `TMC429_RESET_TYPE_VERSION : 24'd0;
+                `TMC429_JDX_GLOBAL_PARAMETERS: sh_rst = GCONF_RST;
                 default: ;
                 endcase
             end
@@ -405,22 +435,26 @@ module tmc429_regfile #(
     wire        sh_wq;
     tmc429_wram #(.AW(6), .DW(24), .WMASK(SH_W)) u_shadow (
         .clk(clk), .rst(rst),
-        .we(wr & ~a7[6]), .waddr(a7[5:0]), .wdata(sh_wdata),
+        .we(wr_reg), .waddr(a7[`TMC429_A7_REG]), .wdata(sh_wdata),
         .re(1'b1), .raddr(rd_addr_q), .q(sh_q), .wq(sh_wq));
     wire [23:0] sh_data = sh_wq ? sh_q : rq_rst;
 
     // ---- read mux ---------------------------------------------------------------------
-    wire [23:0] st_glb = ({24{rq_idx[0] & HAS_CHAIN}} & chain_readback[23:0])    // datagram_low_word
-                       | ({24{rq_idx[1] & HAS_CHAIN}} & chain_readback[47:24])   // datagram_high_word
-                       | {rq_idx[2] & HAS_CHAIN & (cw | chain_cover_busy), 23'd0}
-                       | {23'd0, rq_idx[6] & HAS_429 & pc_i}
-                       | {18'd0, {6{rq_idx[14]}} & {sw_l[2], sw_r[2], sw_l[1], sw_r[1], sw_l[0], sw_r[0]}};
+    wire        rq_sw  = rq_idx[`TMC429_JDX_REF_SWITCHES];
+    wire [23:0] st_glb = ({24{rq_idx[`TMC429_JDX_DATAGRAM_LOW_WORD] & HAS_CHAIN}} & chain_readback[23:0])
+                       | ({24{rq_idx[`TMC429_JDX_DATAGRAM_HIGH_WORD] & HAS_CHAIN}} & chain_readback[47:24])
+                       | ({23'd0, rq_idx[`TMC429_JDX_COVER_POS_LEN] & HAS_CHAIN & (cw | chain_cover_busy)}
+                          << `TMC429_F_CW)
+                       | ({23'd0, rq_idx[`TMC429_JDX_POS_COMP_INT] & HAS_429 & pc_i} << `TMC429_F_POS_COMP_INT_I)
+                       | ({23'd0, rq_sw & sw_r[0]} << `TMC429_F_R1) | ({23'd0, rq_sw & sw_l[0]} << `TMC429_F_L1)
+                       | ({23'd0, rq_sw & sw_r[1]} << `TMC429_F_R2) | ({23'd0, rq_sw & sw_l[1]} << `TMC429_F_L2)
+                       | ({23'd0, rq_sw & sw_r[2]} << `TMC429_F_R3) | ({23'd0, rq_sw & sw_l[2]} << `TMC429_F_L3);
     // power_down reads 0; the rest: shadow RAM
     wire [23:0] st_data = ({24{rq_mot[0]}} & m_rdata[23:0])
                         | ({24{rq_mot[1]}} & m_rdata[47:24])
                         | ({24{rq_mot[2]}} & m_rdata[71:48])
                         | ({24{rq_glb}} & st_glb);
-    // IDX 5 (v_actual = V >> 8 rounded toward 0, C42): V of the selected motor, one
+    // v_actual (V >> 8 rounded toward 0, C42): V of the selected motor, one
     // incrementer for the three motors on this path only
     wire [19:0] v_sel  = ({20{rq_mot[0]}} & p_v[19:0]) | ({20{rq_mot[1]}} & p_v[39:20])
                        | ({20{rq_mot[2]}} & p_v[59:40]);
@@ -429,7 +463,8 @@ module tmc429_regfile #(
     wire [23:0] st_va  = st_data | {12'd0, {12{rq_va}} & v_rd};
     always @(*) begin
         if (rq_ram)
-            rd_data = HAS_RAM ? {10'd0, ram_rdata[11:6], 2'd0, ram_rdata[5:0]} : 24'd0;
+            rd_data = ({18'd0, ram_rdata[11:6]} << `TMC429_F_RAM_ODD_LSB)
+                    | ({18'd0, ram_rdata[5:0]} << `TMC429_F_RAM_EVEN_LSB);
         else
             rd_data = st_va | sh_data;
     end

@@ -10,6 +10,7 @@
 // interrupts), RAM (C30), and the driver side: current scaling (C75-C77), driver chain with
 // the microstep unit (C70-C74, C80-C89), Step/Dir (C91-C96), driver pins (C81, C87, C90).
 `default_nettype none
+`include "tmc429_regmap.vh"
 
 module tmc429_top #(
     parameter CHIP = 1
@@ -104,12 +105,12 @@ module tmc429_top #(
     wire [23:0] gconf, gconf_nx, gconf_wd;
     wire        gconf_we;
     wire [8:0]  ifconf, ifconf_nx;
+    wire [71:0] drv_conf;     // current_scaling of motor m in [24m+23:24m]
+    wire [23:0] drv_m0 = drv_conf[23:0], drv_m1 = drv_conf[47:24], drv_m2 = drv_conf[71:48];
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [59:0] drv_conf;
     wire [2:0]  rtick, rtick_nx;
-    wire [19:0] drv_m0 = drv_conf[19:0], drv_m1 = drv_conf[39:20], drv_m2 = drv_conf[59:40];
     wire [23:0] cover_datagram;
-    wire        cw, dgw, take, ret_cw, ret_dgw, cover_busy, dgw_busy, ram_re;
+    wire        cw, dgw, dw_write, take, ret_cw, ret_dgw, cover_busy, dgw_busy, ram_re;
     wire [5:0]  cover_pos, mux_sw, ram_q;
     wire [4:0]  cover_len;
     wire [47:0] readback;
@@ -129,7 +130,8 @@ module tmc429_top #(
         .drv_gconf_we(gconf_we), .drv_gconf_wd(gconf_wd), .drv_ifconf(ifconf),
         .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf), .drv_ramp_tick(rtick),
         .drv_ramp_tick_nx(rtick_nx),
-        .drv_cw(cw), .drv_dgw(dgw), .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
+        .drv_cw(cw), .drv_dgw(dgw), .drv_dw_write(dw_write),
+        .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
         .drv_cover_datagram(cover_datagram),
         .chain_take(take), .chain_ret_cw(ret_cw), .chain_ret_dgw(ret_dgw),
         .chain_cover_busy(cover_busy), .chain_dgw_busy(dgw_busy), .chain_readback(readback),
@@ -139,11 +141,13 @@ module tmc429_top #(
     // ---- pins (C11, C90) --------------------------------------------------------------------
     // While a frame is active the pin carries the data bit, otherwise nINT (registered: INT
     // of the state before the edge); with sdo_int
-    // (TMC429/TMC4210) it is nINT always and the data goes only to SDOZ_C.
+    // (TMC429/TMC4210) it is nINT always and the data goes only to SDOZ_C. SDOZ_C and POSCMP
+    // are TMC429 pins: the TMC428 and the TMC4210 (which has the position compare registers,
+    // [4210] §3.2) tie them off.
     assign nint_sdo_c = (active & ~sdo_int) ? sdo : nint_q;
-    assign sdoz_c     = (CHIP == 0) ? 1'b0 : sdo;
-    assign sdoz_c_oe  = (CHIP == 0) ? 1'b0 : active;
-    assign poscmp     = poscmp_q;
+    assign sdoz_c     = (CHIP == 1) ? sdo : 1'b0;
+    assign sdoz_c_oe  = (CHIP == 1) ? active : 1'b0;
+    assign poscmp     = (CHIP == 1) ? poscmp_q : 1'b0;
 
     // ---- driver side (C70-C96) ------------------------------------------------------------
     // Inputs from the motors: the signals behind probe_m*_step / _dir / _ustep /
@@ -152,13 +156,13 @@ module tmc429_top #(
     wire [2:0] m_dir  = {probe_m2_dir, probe_m1_dir, probe_m0_dir};
     wire [2:0] v_nz   = {|probe_m2_v_internal, |probe_m1_v_internal, |probe_m0_v_internal};
     wire       run    = ~pd;
-    // driver interface mode (C89, C91): ifconf[5] = en_sd
-    wire       spi_mode = (CHIP == 0) | ((CHIP == 1) & ~ifconf[5]);
-    wire       spi_nx   = (CHIP == 0) | ((CHIP == 1) & ~ifconf_nx[5]);
+    // driver interface mode (C89, C91): en_sd of if_configuration
+    wire       spi_mode = (CHIP == 0) | ((CHIP == 1) & ~ifconf[`TMC429_F_EN_SD]);
+    wire       spi_nx   = (CHIP == 0) | ((CHIP == 1) & ~ifconf_nx[`TMC429_F_EN_SD]);
     /* verilator lint_off UNUSEDSIGNAL */
-    wire       sd_mode  = (CHIP != 0) & ifconf[5];    // unused on the TMC428
+    wire       sd_mode  = (CHIP != 0) & ifconf[`TMC429_F_EN_SD];    // unused on the TMC428
     /* verilator lint_on UNUSEDSIGNAL */
-    wire       sd_nx    = (CHIP != 0) & ifconf_nx[5];
+    wire       sd_nx    = (CHIP != 0) & ifconf_nx[`TMC429_F_EN_SD];
 
     // ramp ticks (C40): phase 30 of the frames whose low ramp_div bits are all 1, from the
     // frame schedule of the register file (the motors' own ramp ticks)
@@ -168,18 +172,21 @@ module tmc429_top #(
     wire [2:0] is0, is1, is2;
     tmc429_current u_cur0 (
         .clk(clk), .rst(rst), .tick(ramp_tick[0] & (CHIP != 2)), .v_nz(v_nz[0]),
-        .a_actual(probe_m0_a_actual), .a_threshold(drv_m0[10:0]),
-        .is_agtat(drv_m0[19:17]), .is_aleat(drv_m0[16:14]), .is_v0(drv_m0[13:11]),
+        .a_actual(probe_m0_a_actual), .a_threshold(drv_m0[`TMC429_F_A_THRESHOLD]),
+        .is_agtat(drv_m0[`TMC429_F_IS_AGTAT]), .is_aleat(drv_m0[`TMC429_F_IS_ALEAT]),
+        .is_v0(drv_m0[`TMC429_F_IS_V0]),
         .i_scale(is0));
     tmc429_current u_cur1 (
         .clk(clk), .rst(rst), .tick(ramp_tick[1] & (CHIP != 2)), .v_nz(v_nz[1]),
-        .a_actual(probe_m1_a_actual), .a_threshold(drv_m1[10:0]),
-        .is_agtat(drv_m1[19:17]), .is_aleat(drv_m1[16:14]), .is_v0(drv_m1[13:11]),
+        .a_actual(probe_m1_a_actual), .a_threshold(drv_m1[`TMC429_F_A_THRESHOLD]),
+        .is_agtat(drv_m1[`TMC429_F_IS_AGTAT]), .is_aleat(drv_m1[`TMC429_F_IS_ALEAT]),
+        .is_v0(drv_m1[`TMC429_F_IS_V0]),
         .i_scale(is1));
     tmc429_current u_cur2 (
         .clk(clk), .rst(rst), .tick(ramp_tick[2] & (CHIP != 2)), .v_nz(v_nz[2]),
-        .a_actual(probe_m2_a_actual), .a_threshold(drv_m2[10:0]),
-        .is_agtat(drv_m2[19:17]), .is_aleat(drv_m2[16:14]), .is_v0(drv_m2[13:11]),
+        .a_actual(probe_m2_a_actual), .a_threshold(drv_m2[`TMC429_F_A_THRESHOLD]),
+        .is_agtat(drv_m2[`TMC429_F_IS_AGTAT]), .is_aleat(drv_m2[`TMC429_F_IS_ALEAT]),
+        .is_v0(drv_m2[`TMC429_F_IS_V0]),
         .i_scale(is2));
 
     // driver chain (C80-C89)
@@ -196,9 +203,9 @@ module tmc429_top #(
         .step(m_step), .dir(m_dir),
         .ustep({probe_m2_ustep, probe_m1_ustep, probe_m0_ustep}),
         .i_scale({is2, is1, is0}), .ramp_tick_nx(rtick_nx),
-        .clk2_div_we(gconf_we), .clk2_div_wd(gconf_wd[15:8]), .lsmd(gconf[1:0]),
-        .pol_ph_ab(gconf[4]), .pol_fd_ab(gconf[5]), .pol_dac_ab(gconf[6]),
-        .cont_update_nx(gconf_nx[16]), .cw(cw), .dgw(dgw),
+        .clk2_div_we(gconf_we), .clk2_div_wd(gconf_wd[`TMC429_F_CLK2_DIV]), .lsmd(gconf[`TMC429_F_LSMD]),
+        .pol_ph_ab(gconf[`TMC429_F_POLARITY_PH_AB]), .pol_fd_ab(gconf[`TMC429_F_POLARITY_FD_AB]),
+        .pol_dac_ab(gconf[`TMC429_F_POLARITY_DAC_AB]), .cont_update_nx(gconf_nx[`TMC429_F_CONT_UPDATE]), .cw(cw), .dgw(dgw), .readback_clr(dw_write),
         .cover_pos(cover_pos), .cover_len(cover_len), .cover_datagram(cover_datagram),
         .sdi_s(sdi_s_q),
         .ram_re(ram_re), .ram_addr(ram_addr), .ram_q(ram_q),
@@ -217,7 +224,7 @@ module tmc429_top #(
                 tmc429_stepdir u_sd (
                     .clk(clk), .rst(rst), .run(run), .en(sd_mode),
                     .step_in(m_step[gi]), .dir_in(m_dir[gi]),
-                    .stpdiv(gconf[11:8]), .step_half(ifconf[2]),
+                    .stpdiv(gconf[`TMC429_F_STPDIV]), .step_half(ifconf[`TMC429_F_STEP_HALF]),
                     .step(sd_step[gi]), .dir(sd_dir[gi]),
                     .step_n(sd_step_n[gi]), .dir_n(sd_dir_n[gi]));
             end else begin : g_off
@@ -235,9 +242,10 @@ module tmc429_top #(
         .clk(clk), .rst(rst), .spi_n(spi_nx), .sd_n(sd_nx),
         .take(take), .cs_ns(c_cs_ns), .sck_ns(c_sck_ns), .sdo_n(c_sdo_n), .motor_ns(c_motor_ns),
         .step_n(sd_step_n), .dir_n(sd_dir_n),
-        .pol_nscs_s(gconf_nx[2]), .pol_sck_s(gconf_nx[3]), .cs_com_ind(gconf_nx[7]),
-        .refmux(gconf_nx[20]), .inv_ref(ifconf_nx[0]), .inv_stp(ifconf_nx[3]),
-        .inv_dir(ifconf_nx[4]), .ref_q(ref_q),
+        .pol_nscs_s(gconf_nx[`TMC429_F_POLARITY_NSCS_S]), .pol_sck_s(gconf_nx[`TMC429_F_POLARITY_SCK_S]),
+        .cs_com_ind(gconf_nx[`TMC429_F_CS_COM_IND]), .refmux(gconf_nx[`TMC429_F_REFMUX]),
+        .inv_ref(ifconf_nx[`TMC429_F_INV_REF]), .inv_stp(ifconf_nx[`TMC429_F_INV_STP]),
+        .inv_dir(ifconf_nx[`TMC429_F_INV_DIR]), .ref_q(ref_q),
         .nscs_s(nscs_s), .sck_s(sck_s), .sdo_s(sdo_s), .sdi_s_o(sdi_s_o),
         .sdi_s_oe(sdi_s_oe), .nscs2(nscs2), .nscs3(nscs3), .mux_sw(mux_sw));
 

@@ -3,37 +3,39 @@
 //
 // Schedule inside the 32-cycle frame (phase p = prescaler[4:0], C41):
 //   p = 7m        snapshot of motor m: dx = x_target - x_actual, rm, pmul, pdiv, v_min,
-//                 v_max, v_target are taken from the old state into the A registers
+//                 v_max, v_target and h are taken from the old state into the A registers
 //                 (v_min, v_max, pmul and pdiv: the synchronous read of the parameter RAMs, whose
 //                 output register is their snapshot)
 //   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE)
 //   p = 7m+2..+6  acc = c * W, W = p_mul << u (10-bit multiplier word, Horner, 2 bits per cycle)
-//   p = 7m+7..+13 B: RAMP_MODE: square root of the radicand (acc << 7) >> pdiv, two result bits
-//                 per cycle (restoring, narrow remainder); SOFT_MODE: (c * p_mul) >> (3+pdiv),
-//                 four bits per cycle shifted out of acc
-//   p = 7m+14     C: clamp to [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign, result
-//                 into vt_next[m]
+//   p = 7m+7..+13 B: RAMP_MODE: square root of Y = (acc << 11) >> pdiv (the radicand of C50),
+//                 two result bits per cycle (restoring, 14 bits); SOFT_MODE: (c * p_mul) >> (3+pdiv), four bits per cycle shifted
+//                 out of acc
+//   p = 7m+14     C: RAMP_MODE: v = (q - h) >> 2 with q the root and h = ⌈a_max/128⌉ when
+//                 ramp_div >= pulse_div (the velocity held between ramp ticks, C50), clamp to
+//                 [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign, result into
+//                 vt_next[m]
 //   p = 29        commit: vt[m] := vt_next[m] for all motors (vt is used from phase 30 on);
 //                 motor 2's result is still the output of C at p = 29 (B and C hold after
 //                 p = 27), so it is committed from there and needs no vt_next register
 // Motor 2's result is ready at p = 28 and committed from C at p = 29. Stages A, B and C work on three motors at once
 // (A on m+1 while B runs m): each stage reads the other's registers from the old state.
 //
-// Square root without a multiplier-wide shifter: with t = pdiv >> 1, e = pdiv & 1 and
-// Z = p_mul * (|dx|-1) * 2^(8-e) = acc * 2^7 (u = 1-e), isqrt(floor(Z / 4^t)) is the
-// restoring square root of Z stopped after result bit t. A result of 2048 or more clamps to
-// v_max, so only 11 result bits matter: for t <= 3 the top 8 bits of Z are skipped (nonzero
-// means "saturated"), and at most 14 steps (7 cycles) remain. An odd step count computes
-// one extra result bit that is dropped ("odd"). SOFT_MODE uses the same B registers to shift
+// Square root: with t = pdiv >> 1, e = pdiv & 1, u = 1 - e and acc = c * (p_mul << u),
+// Y = floor(acc * 2^11 / 4^t) (acc * 2^11 = p_mul * (|dx|-1) * 2^(12-e)). A root of 2^14
+// or more is beyond any v_max (q - h >= 2^14 - 16 gives v >= 4092), so the load takes the 28
+// bits [27:0] of that quotient (a shift of acc by 11 - 2t) and a nonzero bit above them
+// saturates; 14 steps (7 cycles) give the root. SOFT_MODE uses the same B registers to shift
 // (c * p_mul * 2^u) out four bits per cycle; u and "odd" align the last bit with 3 + pdiv.
 //
-// v_max (IDX 3) and p_mul/pdiv (IDX 9) are read by nothing but the snapshot, so they have no
-// flip-flops, and v_min (IDX 2) has a copy for the snapshot: the µC writes them into three
-// parameter RAMs (tmc429_wram, one word per motor)
-// and the snapshot edge reads the word of motor m. A write in a snapshot edge is written one
-// edge later, so the snapshot gives the old value, as the register did (C3); a word not
-// written since reset reads 0 (C2).
+// v_max and p_mul/pdiv are read by nothing but the snapshot, so they have no flip-flops, and
+// v_min has a copy for the snapshot: the µC writes them into three parameter RAMs
+// (tmc429_wram, one word per motor) and the snapshot edge reads the word of motor m. A write in
+// a snapshot edge is written one edge later, so the snapshot gives the old value, as the
+// register did (C3); a word not written since reset reads 0 (C2). Register indices and fields:
+// rtl/tmc429_regmap.vh.
 `default_nettype none
+`include "tmc429_regmap.vh"
 
 module tmc429_vtarget #(
     parameter NMOT = 3            // motors present (TMC4210: 1)
@@ -47,8 +49,10 @@ module tmc429_vtarget #(
     input  wire [71:0] x_target,
     input  wire [71:0] x_actual,
     input  wire [35:0] v_target,
-    // µC write to motor cfg_m's register cfg_idx (IDX 2: v_min; 3: v_max; 9: pmul, pdiv, C22);
-    // cfg_m, cfg_idx and cfg_data still hold in the edge after cfg_we
+    // per motor ⌈a_max/128⌉ if ramp_div >= pulse_div, else 0 (C50), motor m in [5m+4:5m]
+    input  wire [14:0] brake_h,
+    // µC write to motor cfg_m's register cfg_idx (v_min, v_max, pmul_pdiv: C22) with data word
+    // bits 14..0; cfg_m, cfg_idx and cfg_data still hold in the edge after cfg_we
     input  wire        cfg_we,
     input  wire [1:0]  cfg_m,
     input  wire [3:0]  cfg_idx,
@@ -112,19 +116,20 @@ module tmc429_vtarget #(
     reg [23:0] sx_t, sx_a;
     reg [1:0]  s_rm;
     reg [11:0] s_vtg;
+    reg [4:0]  s_h;
     always @(*) begin
         case (a_m)
         2'd1: begin
             sx_t = x_target[47:24]; sx_a = x_actual[47:24]; s_rm = rm[3:2];
-            s_vtg = v_target[23:12];
+            s_vtg = v_target[23:12]; s_h = brake_h[9:5];
         end
         2'd2: begin
             sx_t = x_target[71:48]; sx_a = x_actual[71:48]; s_rm = rm[5:4];
-            s_vtg = v_target[35:24];
+            s_vtg = v_target[35:24]; s_h = brake_h[14:10];
         end
         default: begin
             sx_t = x_target[23:0]; sx_a = x_actual[23:0]; s_rm = rm[1:0];
-            s_vtg = v_target[11:0];
+            s_vtg = v_target[11:0]; s_h = brake_h[4:0];
         end
         endcase
     end
@@ -147,17 +152,18 @@ module tmc429_vtarget #(
     wire        wq_vmax, wq_pd;
     tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_vmax (
         .clk(clk), .rst(rst),
-        .we(cfg_wr & (cfg_idx == 4'd3)), .waddr(cfg_m), .wdata(cfg_data[10:0]),
+        .we(cfg_wr & (cfg_idx == `TMC429_IDX_V_MAX)), .waddr(cfg_m), .wdata(cfg_data[`TMC429_F_V_MAX]),
         .re(snap_re), .raddr(a_m), .q(q_vmax), .wq(wq_vmax));
     tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_pd (
         .clk(clk), .rst(rst),
-        .we(cfg_wr & (cfg_idx == 4'd9)), .waddr(cfg_m), .wdata({cfg_data[14:8], cfg_data[3:0]}),
+        .we(cfg_wr & (cfg_idx == `TMC429_IDX_PMUL_PDIV)), .waddr(cfg_m),   // pmul bit 15 reads 1 (C22)
+        .wdata({cfg_data[`TMC429_F_PMUL_MSB-1:`TMC429_F_PMUL_LSB], cfg_data[`TMC429_F_PDIV]}),
         .re(snap_re), .raddr(a_m), .q(q_pd), .wq(wq_pd));
     wire [10:0] q_vmin;
     wire        wq_vmin;
     tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_vmin (
         .clk(clk), .rst(rst),
-        .we(cfg_wr & (cfg_idx == 4'd2)), .waddr(cfg_m), .wdata(cfg_data[10:0]),
+        .we(cfg_wr & (cfg_idx == `TMC429_IDX_V_MIN)), .waddr(cfg_m), .wdata(cfg_data[`TMC429_F_V_MIN]),
         .re(snap_re), .raddr(a_m), .q(q_vmin), .wq(wq_vmin));
     wire [10:0] a_vmin = wq_vmin ? q_vmin : 11'd0;
     wire [10:0] a_vmax = wq_vmax ? q_vmax : 11'd0;
@@ -167,6 +173,7 @@ module tmc429_vtarget #(
     reg [23:0] a_dx;
     reg [1:0]  a_rm;
     reg [11:0] a_vtg;
+    reg [4:0]  a_h;
     reg        a_sgn, a_zero;
     reg [18:0] a_cv;              // c
     reg [9:0]  a_w;               // multiplier word, consumed from the top
@@ -189,13 +196,14 @@ module tmc429_vtarget #(
     always @(posedge clk) begin
         if (rst) begin
             a_dx <= 24'd0; a_rm <= 2'd0;
-            a_vtg <= 12'd0;
+            a_vtg <= 12'd0; a_h <= 5'd0;
             a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 19'd0; a_w <= 10'd0; acc <= 29'd0;
         end else if (run) begin
             if (a_snap) begin
                 a_dx <= sx_t - sx_a;     // C43: 24-bit wrap-around
                 a_rm <= s_rm;
                 a_vtg <= s_vtg;
+                a_h <= s_h;
             end
             if (a_c) begin
                 a_sgn  <= dx_neg;
@@ -214,76 +222,92 @@ module tmc429_vtarget #(
     // ---- B: square root / shift ------------------------------------------------------------
     reg [1:0]  b_rm;
     reg [10:0] b_vmin, b_vmax;
+    reg [13:0] b_lo4, b_hi4;      // 4·lo + h and 4·(v_max + 1) + h (C: the clamp on 4·v + h)
+    reg [4:0]  b_h;               // h of RAMP_MODE, 0 otherwise
+    reg        b_lo_gt;           // lo > v_max
     reg [11:0] b_vabs;            // |v_target| (VELOCITY_MODE), formed at the load
     reg        b_vneg;
     reg        b_sgn, b_zero, b_odd;
     reg [2:0]  b_ne;
     reg [27:0] sr;
-    reg [12:0] rem;
-    reg [11:0] y;
+    reg [14:0] rem;
+    reg [13:0] y;
     reg        sticky;
 
     // control of the motor in A, formed from pdiv at the c cycle (the parameter RAM's output
     // holds the snapshot until the next snapshot edge, the load cycle) and taken at the load
     wire       l_soft = a_rm == 2'd1;
-    reg        l_skip, l_odd;
-    reg [2:0]  l_ne;
+    reg        l_odd;
+    reg [2:0]  l_ne, l_t;
     always @(posedge clk) begin
         if (rst) begin
-            l_skip <= 1'b0; l_odd <= 1'b0; l_ne <= 3'd0;
+            l_odd <= 1'b0; l_ne <= 3'd0; l_t <= 3'd0;
         end else if (run & a_c) begin
-            l_skip <= ~l_soft & ~a_pdiv[3];
-            l_odd  <= l_soft ? (a_pdiv[1] & a_pdiv[0]) : a_pdiv[1];
-            l_ne   <= l_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : (a_pdiv[2] ? 3'd6 : 3'd7);
+            l_odd  <= l_soft & a_pdiv[1] & a_pdiv[0];
+            l_ne   <= l_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : 3'd7;
+            l_t    <= a_pdiv[3:1];
         end
     end
 
+    // RAMP_MODE radicand: Y = floor(acc·2^11 / 4^t) (acc·2^11 = p_mul·c·2^(12-e)); its
+    // square root below 2^14 needs the 28 bits [27:0], a nonzero bit above saturates
+    wire [39:0] z_sh   = {acc, 11'd0} >> {l_t, 1'b0};
     wire        m_soft = b_load ? l_soft : (b_rm == 2'd1);
-    wire [27:0] src_l  = l_skip ? {acc[20:0], 7'd0} : acc[28:1];   // radicand at the load
+    wire [27:0] src_l  = l_soft ? acc[28:1] : z_sh[27:0];         // radicand / shift at the load
     wire [23:0] sr_nx  = b_load ? src_l[23:0] : sr[23:0];          // the bits after these four
-    wire        st_l   = l_skip & (acc[27:21] != 7'd0);
+    wire        st_l   = ~l_soft & (z_sh[39:28] != 12'd0);
     wire        step   = b_load | (b_k < b_ne);
 
-    // two restoring square-root steps; the remainder stays below 2^13 unless the result
-    // saturates (sticky), so bits 14:13 of a difference that is kept are 0. They are formed
+    // two restoring square-root steps; below saturation the root has at most 14 bits and the
+    // remainder at most 15, so bits 16:15 of a difference that is kept are 0. They are formed
     // for the running state (rem, y, sr) and for the load (remainder and result 0, which
     // folds to a small function of four radicand bits) side by side, and the load selects
     // after them, so the subtractions start at flip-flops.
-    function [24:0] sqrt2;          // {r2, y2}
-        input [12:0] rem_in;
-        input [11:0] y_in;
+    function [28:0] sqrt2;          // {r2, y2}
+        input [14:0] rem_in;
+        input [13:0] y_in;
         input [3:0]  s4;
-        /* verilator lint_off UNUSEDSIGNAL */   // bits 14:13 of a kept difference are 0
-        reg   [15:0] t1, t2;
+        /* verilator lint_off UNUSEDSIGNAL */   // bits 16:15 of a kept difference are 0
+        reg   [17:0] t1, t2;
         /* verilator lint_on UNUSEDSIGNAL */
-        reg   [12:0] r1, r2;
-        reg   [11:0] y1;
+        reg   [14:0] r1, r2;
+        reg   [13:0] y1;
         begin
             t1 = {1'b0, rem_in, s4[3:2]} - {2'b00, y_in, 2'b01};
-            r1 = ~t1[15] ? t1[12:0] : {rem_in[10:0], s4[3:2]};
-            y1 = {y_in[10:0], ~t1[15]};
+            r1 = ~t1[17] ? t1[14:0] : {rem_in[12:0], s4[3:2]};
+            y1 = {y_in[12:0], ~t1[17]};
             t2 = {1'b0, r1, s4[1:0]} - {2'b00, y1, 2'b01};
-            r2 = ~t2[15] ? t2[12:0] : {r1[10:0], s4[1:0]};
-            sqrt2 = {r2, y1[10:0], ~t2[15]};
+            r2 = ~t2[17] ? t2[14:0] : {r1[12:0], s4[1:0]};
+            sqrt2 = {r2, y1[12:0], ~t2[17]};
         end
     endfunction
-    wire [24:0] q_run = sqrt2(rem, y, sr[27:24]);
-    wire [24:0] q_ld  = sqrt2(13'd0, 12'd0, src_l[27:24]);
-    wire [12:0] r2    = b_load ? q_ld[24:12] : q_run[24:12];
-    wire [11:0] y2    = b_load ? q_ld[11:0] : q_run[11:0];
-    wire        st_q  = b_load ? st_l : (sticky | y[11] | y[10]);
-    // SOFT_MODE: four bits shifted into y
+    wire [28:0] q_run = sqrt2(rem, y, sr[27:24]);
+    wire [28:0] q_ld  = sqrt2(15'd0, 14'd0, src_l[27:24]);
+    wire [14:0] r2    = b_load ? q_ld[28:14] : q_run[28:14];
+    wire [13:0] y2    = b_load ? q_ld[13:0] : q_run[13:0];
+    wire        st_q  = b_load ? st_l : sticky;
+    // SOFT_MODE: four bits shifted into y[11:0]
     wire [11:0] y_p   = b_load ? {8'd0, src_l[27:24]} : {y[7:0], sr[27:24]};
     wire        st_p  = b_load ? st_l : (sticky | (y[11:8] != 4'd0));
+
+    // clamp bounds at the load: lo = v_min (0 in VELOCITY_MODE), h only in RAMP_MODE
+    wire        l_vel  = a_rm == 2'd2;
+    wire [10:0] l_lo   = l_vel ? 11'd0 : a_vmin;
+    wire [4:0]  l_h    = (a_rm == 2'd0) ? a_h : 5'd0;
 
     always @(posedge clk) begin
         if (rst) begin
             b_rm <= 2'd0; b_vmin <= 11'd0; b_vmax <= 11'd0; b_vabs <= 12'd0; b_vneg <= 1'b0;
+            b_lo4 <= 14'd0; b_hi4 <= 14'd4; b_h <= 5'd0; b_lo_gt <= 1'b0;
             b_sgn <= 1'b0; b_zero <= 1'b1; b_odd <= 1'b0; b_ne <= 3'd0;
-            sr <= 28'd0; rem <= 13'd0; y <= 12'd0; sticky <= 1'b0;
+            sr <= 28'd0; rem <= 15'd0; y <= 14'd0; sticky <= 1'b0;
         end else if (run) begin
             if (b_load) begin
-                b_rm <= a_rm; b_vmin <= a_vmin; b_vmax <= a_vmax;
+                b_rm <= a_rm; b_vmin <= l_lo; b_vmax <= a_vmax;
+                b_lo4 <= {1'b0, l_lo, 2'b00} + {9'd0, l_h};
+                b_hi4 <= {1'b0, a_vmax, 2'b00} + {9'd0, l_h} + 14'd4;
+                b_h <= l_h;
+                b_lo_gt <= l_lo > a_vmax;
                 b_vabs <= a_vtg[11] ? (~a_vtg + 12'd1) : a_vtg;  // -2048 -> 2048 (>= v_max)
                 b_vneg <= a_vtg[11];
                 b_sgn <= a_sgn; b_zero <= a_zero; b_odd <= l_odd; b_ne <= l_ne;
@@ -291,7 +315,7 @@ module tmc429_vtarget #(
             if (b_run & step) begin
                 sr <= {sr_nx, 4'd0};
                 if (m_soft) begin
-                    y <= y_p;
+                    y <= {2'b00, y_p};
                     sticky <= st_p;
                 end else begin
                     rem <= r2;
@@ -303,17 +327,24 @@ module tmc429_vtarget #(
     end
 
     // ---- C: clamp, sign -------------------------------------------------------------------
-    // min(max(mag, lo), v_max) with both comparisons of mag side by side (lo > v_max only
-    // depends on the snapshot); the sign is applied at the commit (vt_next holds sign and
-    // magnitude), so that no negation follows the comparisons
+    // The clamp min(max(v, lo), v_max) on q = 4·v + h (RAMP_MODE: q = isqrt(16·X), v =
+    // (q - h) >> 2, 0 below h; SOFT and VELOCITY: q = 4·mag, h = 0): both comparisons of q
+    // against the bounds formed at the load, the subtraction beside them (C50); the sign is
+    // applied at the commit (vt_next holds sign and magnitude), so that no negation follows
     wire        c_vel  = b_rm == 2'd2;
+    wire        c_ramp = b_rm == 2'd0;
     wire        y_sat  = sticky | (~b_odd & y[11]);
     wire [10:0] y_mag  = b_odd ? y[11:1] : y[10:0];
     wire [11:0] mag    = c_vel ? b_vabs : {y_sat, y_mag};
-    wire [10:0] lo     = c_vel ? 11'd0 : b_vmin;
-    wire        lo_gt  = lo > b_vmax;
-    wire [10:0] m3     = (mag < {1'b0, lo}) ? (lo_gt ? b_vmax : lo)
-                       : ((mag > {1'b0, b_vmax}) ? b_vmax : mag[10:0]);
+    wire [13:0] q      = c_ramp ? y : {mag, 2'b00};
+    wire        q_sat  = c_ramp & sticky;
+    wire        below  = ~q_sat & (q < b_lo4);
+    wire        above  = q_sat | (q >= b_hi4);
+    /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits of q - h
+    wire [13:0] q_h    = q - {9'd0, b_h};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [10:0] m3     = below ? (b_lo_gt ? b_vmax : b_vmin)
+                       : (above ? b_vmax : q_h[12:2]);
     wire        c_neg  = c_vel ? b_vneg : b_sgn;
     wire        c_none = (b_rm == 2'd3) | (~b_rm[1] & b_zero);
     // sign and magnitude; none = 0 (magnitude 0, sign 0)

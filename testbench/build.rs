@@ -13,6 +13,9 @@
 //! so. `TMC429_VL_CXX` names the compiler instead (at -O2 if it is a clang, else at -O1). The
 //! bridge (cpp/rtl_bridge.cc) is compiled with cxx-build at -O2; all of it also in debug builds.
 //!
+//! Without the default feature `rtl` (the Python package builds the crate so, python/) nothing
+//! of the RTL is built, as without Verilator but without a warning.
+//!
 //! Without Verilator (`verilator` not on PATH, or `VERILATOR` naming a program that does not
 //! run) the crate builds without the RTL: a cargo warning says so and the cfg `tmc429_no_rtl`
 //! leaves out the cxx bridge; `Rtl::try_new` then returns the error `rtl::MISSING` and the
@@ -34,6 +37,11 @@ const VERILATOR_INCLUDE: &str = "/usr/share/verilator/include";
 fn main() {
     println!("cargo:rustc-check-cfg=cfg(tmc429_no_rtl)");
     println!("cargo:rerun-if-env-changed=VERILATOR");
+    if env::var_os("CARGO_FEATURE_RTL").is_none() {
+        // Built without the feature `rtl` (the Python package, python/): no RTL on purpose.
+        println!("cargo:rustc-cfg=tmc429_no_rtl");
+        return;
+    }
     let verilator = env::var("VERILATOR").unwrap_or_else(|_| "verilator".into());
     if !runs(&verilator) {
         no_rtl(&verilator);
@@ -57,6 +65,8 @@ fn main() {
     for s in &sources {
         println!("cargo:rerun-if-changed={}", s.display());
     }
+    // the register map the sources include (`include "tmc429_regmap.vh"`, found through -I)
+    println!("cargo:rerun-if-changed={}", rtl_dir.join("tmc429_regmap.vh").display());
     println!("cargo:rerun-if-changed=cpp/rtl_bridge.h");
     println!("cargo:rerun-if-changed=cpp/rtl_bridge.cc");
     println!("cargo:rerun-if-changed=src/rtl.rs");
@@ -85,7 +95,8 @@ fn main() {
                 .arg("--prefix")
                 .arg(&prefix)
                 .arg("-Mdir")
-                .arg(&mdir);
+                .arg(&mdir)
+                .arg(format!("-I{}", rtl_dir.display()));
             for d in *defines {
                 cmd.arg(format!("-D{d}"));
             }

@@ -1,21 +1,20 @@
 //! The lock-step co-simulation: the same inputs go to the golden model and the Verilated RTL
 //! every CLK cycle; outputs and probes are compared every cycle under a [`Compare`] mask.
 
-use std::collections::VecDeque;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use tmc429_model::{Chip, Inputs, Outputs, Probes, Tmc429};
+use tmc429_model::Chip;
+use tmc429_verif::lockstep::Reference;
 
-use crate::coverage::{reg_name, Coverage};
+use crate::coverage::Coverage;
 use crate::pair::{run_pair, BATCH};
 use crate::rtl::{Expected, Rtl, Variant};
-use crate::signals::{agree, diff, flatten, format_value, Compare, Diff};
-use crate::stimulus::{Driver, Event, Frame, PinLevels, Profile, Stimulus, Txn};
+use crate::signals::{agree, diff, flatten, Compare};
+use crate::stimulus::Profile;
 use crate::trace::TraceWriter;
 
-/// Transactions kept for the mismatch report.
-pub const HISTORY: usize = 16;
+pub use tmc429_verif::lockstep::{Mismatch, TxnRecord, HISTORY};
 
 /// Cycles traced when `--vcd` is given and nothing mismatches.
 pub const VCD_CYCLES_WITHOUT_MISMATCH: u64 = 20_000;
@@ -54,68 +53,6 @@ impl Config {
             window: (400, 100),
         }
     }
-}
-
-/// One SPI frame as the µC saw it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct TxnRecord {
-    /// Cycle of the first tick of the frame (nSCS_C applied low).
-    pub start: u64,
-    /// Cycle in which nSCS_C was applied high (0 while in progress).
-    pub end: u64,
-    pub frame: Frame,
-    /// Bits read from the data pin by the model side and the RTL side, first bit in the
-    /// most significant position of the `bits` received so far.
-    pub reply_model: u64,
-    pub reply_rtl: u64,
-    pub bits: u8,
-}
-
-impl TxnRecord {
-    /// One line: cycles, access decoded by register name, replies of both sides.
-    pub fn describe(&self, chip: Chip) -> String {
-        let f = &self.frame;
-        let w = (self.bits as usize).div_ceil(4).max(1);
-        let access = if f.executes() {
-            if f.is_read() {
-                format!("R {}", reg_name(chip, f.a7()))
-            } else {
-                format!("W {} = ${:06X}", reg_name(chip, f.a7()), f.data())
-            }
-        } else {
-            let sent = if f.nbits <= 32 { (f.datagram as u64) >> (32 - f.nbits as u32) } else { f.datagram as u64 };
-            format!("{}-bit frame ${:0w$X} (not executed)", f.nbits, sent, w = (f.nbits.min(32) as usize).div_ceil(4))
-        };
-        let end = if self.end == 0 { "…".to_string() } else { self.end.to_string() };
-        let same = if self.reply_model == self.reply_rtl { "" } else { "  <- replies differ" };
-        format!(
-            "cycle {:>9}..{:<9} {:<44} reply model ${:0w$X} rtl ${:0w$X}{}",
-            self.start, end, access, self.reply_model, self.reply_rtl, same
-        )
-    }
-
-    /// Short form for the VCD string signal.
-    pub fn short(&self, chip: Chip) -> String {
-        let f = &self.frame;
-        if !f.executes() {
-            return format!("{}-bit_frame", f.nbits);
-        }
-        if f.is_read() {
-            format!("R_{}=${:06X}", reg_name(chip, f.a7()), self.reply_model & 0xFF_FFFF)
-        } else {
-            format!("W_{}=${:06X}", reg_name(chip, f.a7()), f.data())
-        }
-    }
-}
-
-/// The first mismatch.
-#[derive(Clone, Debug)]
-pub struct Mismatch {
-    /// CLK edge (1 = the first after reset) after which the states differ.
-    pub cycle: u64,
-    pub diffs: Vec<Diff>,
-    /// The last transactions, oldest first (the last one may be in progress).
-    pub history: Vec<TxnRecord>,
 }
 
 /// Result of a run.
@@ -158,29 +95,7 @@ impl Outcome {
 
     /// The mismatch report: cycle, differing signals, last transactions.
     pub fn report(&self, m: &Mismatch) -> String {
-        let chip = self.variant.chip();
-        let mut s = String::new();
-        let _ = writeln!(s, "MISMATCH at cycle {} ({}, seed {}):", m.cycle, self.variant, self.seed);
-        let _ = writeln!(s, "  {:<22} {:<20} rtl", "signal", "model");
-        for d in &m.diffs {
-            let name = format!("{}.{}", d.signal.scope, d.signal.name);
-            let _ = writeln!(s, "  {:<22} {:<20} {}", name, format_value(&d.signal, d.model), format_value(&d.signal, d.rtl));
-        }
-        let _ = writeln!(s, "last {} SPI transactions (oldest first):", m.history.len());
-        for t in &m.history {
-            let _ = writeln!(s, "  {}", t.describe(chip));
-        }
-        s
-    }
-}
-
-/// The data pin the µC reads: SDOZ_C while enabled, else nINT_SDO_C.
-#[inline]
-fn data_pin(o: &Outputs) -> u64 {
-    if o.sdoz_c_oe {
-        o.sdoz_c as u64
-    } else {
-        o.nint_sdo_c as u64
+        m.report(&self.variant.to_string(), self.variant.chip(), self.seed)
     }
 }
 
@@ -196,114 +111,13 @@ fn rtl_trace_path(vcd: &Path) -> PathBuf {
     }
 }
 
-/// The model side of a run: stimulus, pin driver, golden model and coverage, and the frame in
-/// progress. The same for the single-thread loop ([`simulate`]) and the two-thread pair
-/// ([`simulate_pair`]): nothing in it reads the RTL except the RTL's reply bits of the frame in
-/// progress, which only the single-thread loop records (for the mismatch report).
-struct ModelSide {
-    chip: Chip,
-    profile: Profile,
-    model: Tmc429,
-    stim: Stimulus,
-    drv: Driver,
-    cov: Coverage,
-    /// The SPI frame in progress.
-    current: Option<TxnRecord>,
-    frames: u64,
-    pin_changes: u64,
-    /// The model's outputs after the last edge.
-    mo: Outputs,
-}
-
-impl ModelSide {
-    fn new(cfg: &Config) -> ModelSide {
-        let chip = cfg.variant.chip();
-        let model = Tmc429::new(chip);
-        let drv = Driver::default();
-        let mut cov = Coverage::new(chip, cfg.profile);
-        let idle = &drv.inputs;
-        cov.set_initial_pins(PinLevels {
-            ref_: [idle.ref1, idle.ref2, idle.ref3],
-            refr: [idle.refr1, idle.refr2, idle.refr3],
-            sdi_s: idle.sdi_s,
-        });
-        ModelSide {
-            chip,
-            profile: cfg.profile,
-            mo: model.outputs(),
-            model,
-            stim: Stimulus::new(chip, cfg.profile, cfg.seed),
-            drv,
-            cov,
-            current: None,
-            frames: 0,
-            pin_changes: 0,
-        }
-    }
-
-    /// Edge `n` (0-based) of the model side: the next transaction when the driver is ready,
-    /// the driver's pins, the data pin sampled by the µC, then the model's edge and the
-    /// coverage. `ro`: the RTL's outputs before the edge, for the RTL's reply bits (the
-    /// single-thread loop). Returns the inputs, the model's probes after the edge and the frame
-    /// that ended with this edge.
-    #[inline]
-    fn step(&mut self, n: u64, ro: Option<&Outputs>) -> (Inputs, Probes, Option<TxnRecord>) {
-        if self.drv.ready() {
-            let t = self.stim.next_txn();
-            match &t {
-                Txn::Frame(f) => {
-                    self.frames += 1;
-                    self.current = Some(TxnRecord { start: n + 1, end: 0, frame: *f, reply_model: 0, reply_rtl: 0, bits: 0 });
-                }
-                Txn::Pins { levels, .. } => {
-                    self.pin_changes += 1;
-                    self.cov.pins(levels);
-                }
-                Txn::Idle(_) => {}
-            }
-            self.drv.start(t);
-        }
-        let (inp, ev) = self.drv.step();
-        let mut ended: Option<TxnRecord> = None;
-        match ev {
-            Event::Sample(_) => {
-                if let Some(c) = self.current.as_mut() {
-                    c.reply_model = c.reply_model << 1 | data_pin(&self.mo);
-                    if let Some(ro) = ro {
-                        c.reply_rtl = c.reply_rtl << 1 | data_pin(ro);
-                    }
-                    c.bits += 1;
-                }
-            }
-            Event::FrameEnd(f) => {
-                if let Some(mut c) = self.current.take() {
-                    c.end = n + 1;
-                    self.cov.frame(self.chip, &f, c.reply_model, &self.model);
-                    ended = Some(c);
-                }
-            }
-            Event::None => {}
-        }
-
-        self.mo = self.model.tick(&inp);
-        let mp = self.model.probes();
-        self.cov.cycle(&self.mo, &mp);
-        self.cov.model(&self.model, &mp);
-        if self.profile == Profile::Drivers {
-            self.cov.drivers(self.chip, &self.mo, &mp, &self.model);
-        }
-        (inp, mp, ended)
-    }
-}
-
 /// Runs model and RTL in lock-step on one thread. Stops at the first mismatch. `trace`: write a
 /// VCD of the ticks `from..to` (0-based tick index) to this path.
 fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, String> {
     let chip = cfg.variant.chip();
     // Verilator's trace code slows every cycle: only the traced run uses the model that has it
     let mut rtl = if trace.is_some() { Rtl::try_new_traced(cfg.variant)? } else { Rtl::try_new(cfg.variant)? };
-    let mut side = ModelSide::new(cfg);
-    let mut history: VecDeque<TxnRecord> = VecDeque::with_capacity(HISTORY + 1);
+    let mut side = Reference::new(chip, cfg.profile, cfg.seed);
     let mut out = Outcome {
         variant: cfg.variant,
         seed: cfg.seed,
@@ -317,10 +131,10 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
     let mut ro = rtl.outputs();
 
     // the reset states must agree before the first edge
-    let (mo, mp0, rp0) = (side.mo, side.model.probes(), rtl.probes());
+    let (mo, mp0, rp0) = (side.outputs(), side.model().probes(), rtl.probes());
     if !agree(cfg.compare, &mo, &mp0, &ro, &rp0) {
         out.mismatch = Some(Mismatch { cycle: 0, diffs: diff(cfg.compare, &flatten(&mo, &mp0), &flatten(&ro, &rp0)), history: Vec::new() });
-        out.coverage = side.cov;
+        out.coverage = side.into_coverage();
         return Ok(out);
     }
 
@@ -337,14 +151,8 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
                 rtl.trace_open(&rtl_trace_path(path), cfg.fclk)?;
             }
         }
-        let (inp, mp, ended) = side.step(n, Some(&ro));
-        if let Some(c) = ended {
-            if history.len() == HISTORY {
-                history.pop_front();
-            }
-            history.push_back(c);
-        }
-        let mo = side.mo;
+        let (inp, mp, ended) = side.step(Some(&ro));
+        let mo = side.outputs();
         ro = rtl.tick(&inp);
         let rp = rtl.probes();
         let ok = agree(cfg.compare, &mo, &mp, &ro, &rp);
@@ -360,15 +168,9 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         }
         out.cycles = n + 1;
         if !ok && out.mismatch.is_none() {
-            let mut h: Vec<TxnRecord> = history.iter().copied().collect();
-            if let Some(c) = side.current {
-                h.push(c);
-                if h.len() > HISTORY {
-                    h.remove(0);
-                }
-            }
-            out.mismatch = Some(Mismatch { cycle: n + 1, diffs: diff(cfg.compare, &flatten(&mo, &mp), &flatten(&ro, &rp)), history: h });
-            counted = (n + 1, side.frames, side.pin_changes);
+            let history = side.source().history();
+            out.mismatch = Some(Mismatch { cycle: n + 1, diffs: diff(cfg.compare, &flatten(&mo, &mp), &flatten(&ro, &rp)), history });
+            counted = (n + 1, side.source().frames(), side.source().pin_changes());
             if trace.is_none() || n + 1 >= t_to {
                 break;
             }
@@ -381,11 +183,11 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
         w.finish().map_err(|e| format!("writing VCD: {e}"))?;
         rtl.trace_close();
     }
-    (out.frames, out.pin_changes) = (side.frames, side.pin_changes);
+    (out.frames, out.pin_changes) = (side.source().frames(), side.source().pin_changes());
     if out.mismatch.is_some() {
         (out.cycles, out.frames, out.pin_changes) = counted;
     }
-    out.coverage = side.cov;
+    out.coverage = side.into_coverage();
     Ok(out)
 }
 
@@ -396,14 +198,14 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
 /// seeded), which stops at the same first mismatch and gives the report: the outcome is the
 /// same as [`simulate`]'s either way.
 fn simulate_pair(cfg: &Config) -> Result<Outcome, String> {
-    let mut side = ModelSide::new(cfg);
-    let reset = (side.mo, side.model.probes());
+    let mut side = Reference::new(cfg.variant.chip(), cfg.profile, cfg.seed);
+    let reset = (side.outputs(), side.model().probes());
     let mut n = 0u64;
     let first = run_pair(cfg.variant, cfg.compare, reset, |buf| {
         let end = (n + BATCH as u64).min(cfg.cycles);
         while n < end {
-            let (inp, probes, _) = side.step(n, None);
-            buf.push(Expected::new(&inp, &side.mo, &probes));
+            let (inp, probes, _) = side.step(None);
+            buf.push(Expected::new(&inp, &side.outputs(), &probes));
             n += 1;
         }
         n < cfg.cycles
@@ -415,10 +217,10 @@ fn simulate_pair(cfg: &Config) -> Result<Outcome, String> {
         variant: cfg.variant,
         seed: cfg.seed,
         cycles: cfg.cycles,
-        frames: side.frames,
-        pin_changes: side.pin_changes,
+        frames: side.source().frames(),
+        pin_changes: side.source().pin_changes(),
         mismatch: None,
-        coverage: side.cov,
+        coverage: side.into_coverage(),
         vcd_files: Vec::new(),
     })
 }

@@ -14,13 +14,8 @@ use tmc429_model::{Inputs, Outputs, Probes};
 
 use crate::signals::{flatten, N_SIGNALS, SIGNALS};
 
-/// The input pins in the VCD's `top` scope.
-pub const INPUT_NAMES: [&str; 10] = ["nscs_c", "sck_c", "sdi_c", "sdi_s", "ref1", "ref2", "ref3", "refr1", "refr2", "refr3"];
-
-/// The input pins in the order of [`INPUT_NAMES`].
-pub fn input_bits(i: &Inputs) -> [bool; 10] {
-    [i.nscs_c, i.sck_c, i.sdi_c, i.sdi_s, i.ref1, i.ref2, i.ref3, i.refr1, i.refr2, i.refr3]
-}
+/// The input pins in the VCD's `top` scope, and their levels in that order.
+pub use tmc429_verif::pinword::{input_bits, INPUT_NAMES};
 
 /// Writes the side-by-side VCD.
 pub struct TraceWriter {
@@ -37,7 +32,7 @@ pub struct TraceWriter {
     last_rtl: Option<[u64; N_SIGNALS]>,
 }
 
-/// The VCD scopes of the compared signals (ARCHITECTURE.md, "Files").
+/// The VCD scopes of the compared signals (docs/cosim.md, "The VCD files").
 pub const SCOPES: [&str; 5] = ["top", "motor0", "motor1", "motor2", "chain"];
 
 /// Adds the scopes and wires of the compared signals except those named in `skip`; in scope

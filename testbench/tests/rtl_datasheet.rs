@@ -31,6 +31,11 @@ fn ram_write_example_and_power_on_contents() {
     // [4210] RAM write example (E2: the 32-bit datagram $FE002321), read back
     assert_eq!(frame(&mut rtl, Frame::new(0xFE00_2321)), 0x1500_0000);
     assert_eq!(frame(&mut rtl, Frame::new(0xFF00_0000)), 0x1500_2321);
+    // TMC4210 (§5.2.3, §5.3): the same RAM and power-on contents (C30), the example read back
+    let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc4210));
+    assert_eq!(frame(&mut rtl, Frame::new(0x8100_0000)), 0x1500_0511);
+    assert_eq!(frame(&mut rtl, Frame::new(0xFE00_2321)), 0x1500_0000);
+    assert_eq!(frame(&mut rtl, Frame::new(0xFF00_0000)), 0x1500_2321);
     // TMC428: RAM all 0 at power-on
     let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc428));
     assert_eq!(frame(&mut rtl, Frame::new(0x8100_0000)), 0x1500_0000);
@@ -56,11 +61,13 @@ fn power_on_registers() {
     let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc429));
     assert_eq!(frame(&mut rtl, Frame::read(0x3F)), 0x1500_0F00); // clk2_div = 15
     assert_eq!(frame(&mut rtl, Frame::read(0x39)), 0x1542_9101); // type_version
-    assert_eq!(frame(&mut rtl, Frame::read(0x32)), 0x1500_0100); // cover_pos reads +1
+    assert_eq!(frame(&mut rtl, Frame::read(0x32)), 0x1500_0000); // stored cover_pos + 1 = 0 (C29)
     assert_eq!(frame(&mut rtl, Frame::read(0x09)), 0x1500_8000); // pmul bit 15 reads 1
     let mut rtl = Rtl::new(Variant::Chip(Chip::Tmc428));
     assert_eq!(frame(&mut rtl, Frame::read(0x39)), 0x1500_0000); // unused on the TMC428
     assert!(!rtl.outputs().poscmp);
     let rtl = Rtl::new(Variant::Chip(Chip::Tmc4210));
+    assert!(!rtl.outputs().poscmp); // the TMC4210 has no POSCMP pin ([4210] §3.2, C90)
+    let rtl = Rtl::new(Variant::Chip(Chip::Tmc429));
     assert!(rtl.outputs().poscmp); // x_actual 0 matches pos_comp 0 (C2)
 }

@@ -1,6 +1,6 @@
 //! The Verilated RTL alone: driver-chain datagrams, cover, SCK_S timing, chip selects, refmux
 //! sampling and the Step/Dir pin levels, with the exact values of the datasheets and the
-//! contract (spec-digest §5.2, TMC428 §9.3, §9.7, Table 6-2; C80–C93).
+//! contract (TMC428 Table 11-2, §9.3, §9.7, Table 6-2; C80–C93).
 #![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use tmc429_model::ram::{SINE_LUT, TABLE_11_2};
@@ -140,9 +140,9 @@ fn one_datagram(b: &mut Bench) -> (u32, u64) {
     d[0]
 }
 
-/// spec-digest §5.2: Table 11-2 configuration, Table 12-2 LUT, LSMD 2, microstep index w.
+/// TMC428 Table 11-2 configuration, Table 12-2 LUT, LSMD 2, microstep index w.
 #[test]
-fn digest_5_2_datagrams_on_the_pins() {
+fn table_11_2_datagrams_on_the_pins() {
     let cases: [(u8, u64); 6] =
         [(0, 0x05F05F07F), (16, 0x35D35D37D), (64, 0x7C07C0FC0), (100, 0x55805F07F), (128, 0x01E05F07F), (200, 0x78705F07F)];
     for (w, want) in cases {
@@ -162,7 +162,7 @@ fn digest_5_2_datagrams_on_the_pins() {
     assert_eq!(one_datagram(&mut b), (36, 0x1CF1CF1EF));
 }
 
-/// spec-digest §5.2: the TMC429's power-on RAM (One at the mixed-decay positions), w = 0.
+/// TMC429 §11.4.2: the TMC429's power-on RAM (One at the mixed-decay positions), w = 0.
 #[test]
 fn tmc429_power_on_datagram() {
     let mut b = Bench::new(Chip::Tmc429);
@@ -192,7 +192,7 @@ fn cover_datagram_bits() {
 
 /// C81, TMC428 §9.7: SCK_S low half clk2_div + 1, period max(16, 2·(clk2_div + 1)); NxM gap one
 /// period (clk2_div ≤ 7) or 1.5 periods; C82 / Table 6-2: a 1-bit datagram keeps the select
-/// active 48 CLK at clk2_div 7.
+/// active 32 CLK at clk2_div 7 (48 CLK with the t_SUSCSdrv that follows).
 #[test]
 fn sck_s_timing() {
     for c in [0u32, 3, 7, 8, 20] {
@@ -220,9 +220,40 @@ fn sck_s_timing() {
     b.trace.clear();
     b.write(COVER_DATAGRAM, 0);
     b.wait(300);
+    // [429] Table 11.2 at clk2_div 7: t_HDSCSdrv 8 CLK before the first falling SCK_S edge, the
+    // bit (8 + 8), a hold of 8 (C82): the chip select is active 32 CLK; the SCK_S low half
+    // starts 8 CLK after it falls.
     let sel: Vec<(bool, usize)> = runs(&b.trace, |o| o.nscs_s).into_iter().filter(|r| !r.0).collect();
-    assert_eq!(sel, vec![(false, 48)]);
+    assert_eq!(sel, vec![(false, 32)]);
+    let cs_fall = b.trace.iter().position(|o| !o.nscs_s).unwrap();
+    let sck_fall = b.trace.iter().position(|o| !o.sck_s).unwrap();
+    assert_eq!(sck_fall - cs_fall, 8, "t_HDSCSdrv");
     assert_eq!(datagrams(&b.trace), vec![(1, 1)]);
+}
+
+/// [429] §8.2.4 note: the driver outputs are logic high after power-on until configured for
+/// Step/Dir; Fig. 11.1: SDO_S high before the first bit and again when nSCS_S rises (C2, C81).
+#[test]
+fn driver_pins_high_after_power_on_and_between_datagrams() {
+    for chip in [Chip::Tmc428, Chip::Tmc429] {
+        let mut b = Bench::new(chip);
+        let o = b.tick();
+        assert!(o.sdo_s && o.sck_s && o.nscs_s && o.nscs2 && o.nscs3, "{chip:?}: power-on levels {o:?}");
+        b.config(&TABLE_11_2);
+        b.lut();
+        b.write(GCONF, 7 << 8 | 1 << 4); // polarity_ph_ab: the last bit, PH_B, is 0 at w = 0
+        b.write(COVER_POS_LEN, 0);
+        b.trace.clear();
+        b.write(COVER_DATAGRAM, 0);
+        b.wait(400);
+        assert_eq!(datagrams(&b.trace).len(), 1, "{chip:?}");
+        for w in b.trace.windows(2) {
+            assert!(!w[0].nscs_s || w[0].sdo_s, "{chip:?}: SDO_S high while nSCS_S is inactive");
+            if !w[0].nscs_s && w[1].nscs_s {
+                assert!(!w[0].sdo_s && w[1].sdo_s, "{chip:?}: SDO_S returns high with nSCS_S");
+            }
+        }
+    }
 }
 
 /// C81, TMC428 §9.7: csCommonIndividual — nSCS_S, nSCS2, nSCS3 select the drivers of motors
@@ -274,7 +305,7 @@ fn refmux_sampling() {
 }
 
 /// C87, C88: SDI_S shifts into the 48-bit readback at each rising SCK_S; a datagram-word write
-/// sets CDGW until the next datagram ends.
+/// initializes both words to 0 ([429] §8.2.1) and sets CDGW until the next datagram ends.
 #[test]
 fn readback_and_cdgw() {
     let mut b = table_11_2_chip();
@@ -287,6 +318,8 @@ fn readback_and_cdgw() {
     // 36 ones shifted in (plus the synchronizer delay, C4)
     assert_eq!(b.read(0x30), 0xFF_FFFF);
     assert_eq!(b.read(0x31), 0x00_0FFF);
+    b.write(0x30, 0x123456);
+    assert_eq!((b.read(0x30), b.read(0x31)), (0, 0), "initialized by the write");
 }
 
 /// C91–C93: Step/Dir pin levels without steps — TMC429 S1..S3 / D1..D3 with inv_stp, inv_dir;

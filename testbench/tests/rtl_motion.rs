@@ -79,10 +79,16 @@ fn first_tick(chip: Chip, m: u8, rm: u32, dx: u32, v_min: u32, v_max: u32, pmul_
     c.rd(m, V_TARGET)
 }
 
-/// C50 RAMP_MODE: sign(dx)·clamp(isqrt((p_mul·(|dx|−1)·2^8) >> pdiv), v_min, v_max).
+/// The C50 RAMP_MODE law with h = ⌈a_max/128⌉ (pulse_div = ramp_div):
+/// min((isqrt(Y) − h) >> 2, 2047), Y = (p_mul·(|dx|−1)·2^12) >> pdiv.
+fn ramp_law(y: u64, a_max: u64) -> u32 {
+    (y.isqrt().saturating_sub(a_max.div_ceil(128)) >> 2).min(2047) as u32
+}
+
+/// C50 RAMP_MODE: sign(dx)·clamp((isqrt(Y) − h) >> 2, v_min, v_max).
 #[test]
 fn ramp_mode_square_root_law() {
-    // isqrt(128·299·256 >> 4) = isqrt(612352) = 782
+    // isqrt(128·299·4096 >> 4) = isqrt(9797632) = 3130, h = 1: 782
     assert_eq!(first_tick(Chip::Tmc429, 0, 0, 300, 1, 2047, P_ONE), 782);
     // dx = 1: isqrt(0) = 0, v_min carries the motor over the last step
     assert_eq!(first_tick(Chip::Tmc428, 1, 0, 1, 3, 2047, P_ONE), 3);
@@ -91,13 +97,33 @@ fn ramp_mode_square_root_law() {
     assert_eq!(first_tick(Chip::Tmc4210, 0, 0, (-300i32) as u32 & 0xFF_FFFF, 1, 2047, P_ONE), (-782i32) as u32 & 0xFFF);
     // v_min > v_max: v_max
     assert_eq!(first_tick(Chip::Tmc429, 0, 0, 1, 40, 20, P_ONE), 20);
-    // every pdiv, p_mul 255: isqrt((255·999·256) >> pdiv) for dx = 1000
+    // every pdiv, p_mul 255, for dx = 1000
     for pdiv in 0..16u32 {
-        let want = (((255u64 * 999) << 8) >> pdiv).isqrt().min(2047) as u32;
+        let want = ramp_law(((255u64 * 999) << 12) >> pdiv, 1);
         assert_eq!(first_tick(Chip::Tmc429, 1, 0, 1000, 0, 2047, 0xFF00 | pdiv), want, "pdiv {pdiv}");
     }
-    // |dx| is limited to 2^19 − 1 (C43): isqrt((128·(2^19−2)·256) >> 15) = 724
-    assert_eq!(first_tick(Chip::Tmc429, 0, 0, 0x7F_FFFF, 0, 2047, 0x800F), 724);
+    // |dx| is limited to 2^19 − 1 (C43): isqrt((128·(2^19−2)·4096) >> 15) = 2896, 723
+    assert_eq!(first_tick(Chip::Tmc429, 0, 0, 0x7F_FFFF, 0, 2047, 0x800F), 723);
+    assert_eq!(ramp_law((128 * ((1 << 19) - 2) * 4096) >> 15, 1), 723);
+}
+
+/// C50 RAMP_MODE's h = ⌈a_max/128⌉ when ramp_div ≥ pulse_div, 0 below.
+#[test]
+fn ramp_mode_aims_below_by_half_a_ramp_tick_of_deceleration() {
+    let tick = |a_max: u32, pd: u32, rd: u32, dx: u32| {
+        let mut c = Chip1::new(Chip::Tmc429);
+        c.setup(1, pd, rd, 1, 2047, a_max, P_ONE, 0);
+        c.wr(1, X_TARGET, dx);
+        c.wait(64);
+        c.rd(1, V_TARGET)
+    };
+    // (3130 − 16) >> 2 = 778; ramp_div below pulse_div: 3130 >> 2 = 782
+    assert_eq!(tick(2047, 0, 0, 300), 778);
+    assert_eq!(tick(2047, 0, 1, 300), 778);
+    assert_eq!(tick(2047, 1, 0, 300), 782);
+    assert_eq!(tick(129, 0, 0, 300), ramp_law(9797632, 129));
+    // dx = 2: (isqrt(32768) − 16) >> 2 = 41
+    assert_eq!(tick(2047, 0, 0, 2), 41);
 }
 
 /// C50 SOFT_MODE: sign(dx)·clamp((p_mul·|dx|) >> (3+pdiv), v_min, v_max).

@@ -8,7 +8,7 @@
 
 module tb_chain;
     parameter CHIP = 1;
-    localparam W_IN  = 104;
+    localparam W_IN  = 105;
     localparam W_OUT = 88;
     localparam UNIT  = "chain";
 
@@ -18,23 +18,24 @@ module tb_chain;
     assign vout[86:80] = ram_addr & {7{vout[87]}};
 
     tmc429_chain dut (
-        .clk(clk), .rst(vin[103]),
-        .run(vin[102]),
-        .spi_mode(vin[101]),
-        .step(vin[100:98]),
-        .dir(vin[97:95]),
-        .ustep(vin[94:71]),
-        .i_scale(vin[70:62]),
-        .ramp_tick_nx(vin[61:59]),
-        .clk2_div_we(vin[58]),
-        .clk2_div_wd(vin[57:50]),
-        .lsmd(vin[49:48]),
-        .pol_ph_ab(vin[47]),
-        .pol_fd_ab(vin[46]),
-        .pol_dac_ab(vin[45]),
-        .cont_update_nx(vin[44]),
-        .cw(vin[43]),
-        .dgw(vin[42]),
+        .clk(clk), .rst(vin[104]),
+        .run(vin[103]),
+        .spi_mode(vin[102]),
+        .step(vin[101:99]),
+        .dir(vin[98:96]),
+        .ustep(vin[95:72]),
+        .i_scale(vin[71:63]),
+        .ramp_tick_nx(vin[62:60]),
+        .clk2_div_we(vin[59]),
+        .clk2_div_wd(vin[58:51]),
+        .lsmd(vin[50:49]),
+        .pol_ph_ab(vin[48]),
+        .pol_fd_ab(vin[47]),
+        .pol_dac_ab(vin[46]),
+        .cont_update_nx(vin[45]),
+        .cw(vin[44]),
+        .dgw(vin[43]),
+        .readback_clr(vin[42]),
         .cover_pos(vin[41:36]),
         .cover_len(vin[35:31]),
         .cover_datagram(vin[30:7]),

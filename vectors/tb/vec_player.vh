@@ -21,7 +21,7 @@
     localparam W_LINE  = 4 + W_PORTS + W_CHECK;
     localparam MAXCOLS = 64;
 
-    reg                clk = 1'b0;
+    reg                clk = 1'b1;
     reg  [W_IN-1:0]    vin;
     wire [W_OUT-1:0]   vout;
 
@@ -59,7 +59,8 @@
         end
     endtask
 
-    // free-running clock, period 10 time units; inputs change at the falling edge
+    // free-running clock, period 10 time units, high at time 0: the first edge is the falling one
+    // (at 5), where line 0's inputs are applied, and the first rising edge (at 10) is line 0's
     always #5 clk = ~clk;
 
     initial begin

@@ -2,22 +2,27 @@
 //! (docs/vectors.md).
 //!
 //! - [`pins`]: the pin-level form (`.hex` + `.cols` + `.meta`);
+//! - [`pinmap`], [`stil`], [`evcd`]: the chip's pins for testers and simulators (STIL, EVCD,
+//!   pin VCD);
 //! - [`record`]: what each unit's boundary shows per CLK edge, as pin-level lines or CSV rows;
 //! - [`lut`]: the microstep unit's complete tables;
 //! - [`scenario`]: built-in scenarios and scenario files;
 //! - [`export`]: runs a scenario on the model and writes the files of one unit.
 
+pub mod evcd;
 pub mod files;
 pub mod lut;
+pub mod pinmap;
 pub mod pins;
 pub mod record;
 pub mod scenario;
+pub mod stil;
 
 use std::fmt;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-use tmc429_model::Tmc429;
+use tmc429_model::{Package, Tmc429};
 
 use pins::Meta;
 use record::Recorder;
@@ -48,9 +53,14 @@ impl Unit {
 
     /// The forms this unit has today. Pin-level vectors of a unit need the same boundary in the
     /// model as its RTL module: the SPI slave, the ramp/pulse generator, the microstep LUT unit
-    /// and the driver-chain master have it; the chip has pin-level vectors only.
+    /// and the driver-chain master have it; the chip has pin-level vectors only, and the
+    /// tester forms of its pins (STIL, EVCD, pin VCD).
     pub fn has(self, f: Form) -> bool {
-        matches!((self, f), (Unit::Spi | Unit::Ramp | Unit::Lut | Unit::Chain, _) | (Unit::Chip, Form::Pins))
+        match f {
+            Form::Pins => true,
+            Form::Csv => self != Unit::Chip,
+            Form::Stil | Form::Evcd | Form::Vcd => self == Unit::Chip,
+        }
     }
 }
 
@@ -72,6 +82,25 @@ impl FromStr for Unit {
 pub enum Form {
     Pins,
     Csv,
+    /// STIL (IEEE 1450) of the chip's pins, `.stil`.
+    Stil,
+    /// Extended VCD (`$dumpports`) of the chip's pins, `.evcd`.
+    Evcd,
+    /// Four-state VCD of the chip's pins, `.vcd`.
+    Vcd,
+}
+
+impl Form {
+    /// The file extension of a single-file form.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Form::Pins => "hex",
+            Form::Csv => "csv",
+            Form::Stil => "stil",
+            Form::Evcd => "evcd",
+            Form::Vcd => "vcd",
+        }
+    }
 }
 
 /// The `--format` choice.
@@ -79,7 +108,10 @@ pub enum Form {
 pub enum Format {
     Pins,
     Csv,
-    /// Every form the unit has.
+    Stil,
+    Evcd,
+    Vcd,
+    /// The pin-level and CSV forms the unit has.
     All,
 }
 
@@ -89,8 +121,11 @@ impl FromStr for Format {
         match s {
             "pins" => Ok(Format::Pins),
             "csv" => Ok(Format::Csv),
+            "stil" => Ok(Format::Stil),
+            "evcd" => Ok(Format::Evcd),
+            "vcd" => Ok(Format::Vcd),
             "all" => Ok(Format::All),
-            _ => Err(format!("unknown format '{s}': expected pins, csv or all")),
+            _ => Err(format!("unknown format '{s}': expected pins, csv, stil, evcd, vcd or all")),
         }
     }
 }
@@ -100,21 +135,32 @@ pub fn forms(unit: Unit, format: Format) -> Result<Vec<Form>, String> {
     let want: Vec<Form> = match format {
         Format::Pins => vec![Form::Pins],
         Format::Csv => vec![Form::Csv],
+        Format::Stil => vec![Form::Stil],
+        Format::Evcd => vec![Form::Evcd],
+        Format::Vcd => vec![Form::Vcd],
         Format::All => vec![Form::Pins, Form::Csv],
     };
     let have: Vec<Form> = want.iter().copied().filter(|f| unit.has(*f)).collect();
     if have.is_empty() {
         return Err(match (unit, format) {
-            (Unit::Chip, _) => "unit chip has pin-level vectors only: use --format pins".to_string(),
+            (Unit::Chip, _) => "unit chip has no CSV form: use --format pins, stil, evcd or vcd".to_string(),
+            (_, Format::Stil | Format::Evcd | Format::Vcd) => {
+                format!("unit {unit}: STIL, EVCD and pin VCD are forms of the chip's pins: use --unit chip")
+            }
             _ => format!("unit {unit} has no {format:?} vectors"),
         });
     }
     Ok(have)
 }
 
-/// File stem of a unit's vectors for a scenario: `DIR/UNIT-SCENARIO-CHIP`.
+/// File stem of a unit's vectors for a scenario: `DIR/UNIT-SCENARIO-CHIP`, with `-PACKAGE`
+/// for a package that lacks pins of the variant (C90).
 pub fn stem(dir: &Path, unit: Unit, sc: &Scenario) -> PathBuf {
-    dir.join(format!("{}-{}-{}", unit, sc.name, sc.chip))
+    if sc.package == Package::full(sc.chip) {
+        dir.join(format!("{}-{}-{}", unit, sc.name, sc.chip))
+    } else {
+        dir.join(format!("{}-{}-{}-{}", unit, sc.name, sc.chip, sc.package))
+    }
 }
 
 /// Runs `sc` on the golden model and writes the vectors of `unit` in `forms` to `dir`. The files
@@ -134,6 +180,7 @@ pub fn export(unit: Unit, sc: &Scenario, forms: &[Form], dir: &Path) -> Result<V
                     m.notes.clear();
                     all.extend(lut::write_pins(&st, m)?);
                 }
+                f => return Err(format!("unit lut: no {f:?} form")),
             }
         }
         return files::commit_all(all);
@@ -158,6 +205,13 @@ pub fn export_units(sc: &Scenario, set: &[(Unit, Vec<Form>)], dir: &Path) -> Res
         for f in forms {
             let r: Box<dyn Recorder> = match (unit, f) {
                 (Unit::Chip, Form::Pins) => Box::new(record::ChipPins::create(&stem)?),
+                (Unit::Chip, Form::Stil) => {
+                    Box::new(record::ChipForm(stil::ChipStil::create(&stem.with_extension("stil"), &meta(unit, sc))?))
+                }
+                (Unit::Chip, Form::Evcd | Form::Vcd) => {
+                    let d = if *f == Form::Evcd { evcd::Dialect::Evcd } else { evcd::Dialect::Vcd };
+                    Box::new(record::ChipForm(evcd::ChipDump::create(&stem.with_extension(f.extension()), d, &meta(unit, sc))?))
+                }
                 (Unit::Spi, Form::Pins) => Box::new(record::SpiPins::create(&stem)?),
                 (Unit::Spi, Form::Csv) => Box::new(record::SpiCsv::create(&stem.with_extension("csv"), sc.chip)?),
                 (Unit::Ramp, Form::Pins) => Box::new(record::RampPins::create(&stem)?),
@@ -169,7 +223,7 @@ pub fn export_units(sc: &Scenario, set: &[(Unit, Vec<Form>)], dir: &Path) -> Res
             recs.push((unit, r));
         }
     }
-    let mut chip = Tmc429::new(sc.chip);
+    let mut chip = Tmc429::with_package(sc.chip, sc.package)?;
     for (_, r) in recs.iter_mut() {
         r.reset(&chip)?;
     }
@@ -193,5 +247,15 @@ fn meta(unit: Unit, sc: &Scenario) -> Meta {
     if unit == Unit::Chip && !record::RTL_PENDING_PINS.is_empty() {
         notes.push(format!("not_compared: pins the reference RTL does not drive yet ({})", record::RTL_PENDING_PINS.join(", ")));
     }
-    Meta { unit: unit.name(), chip: sc.chip, fclk: sc.fclk, scenario: sc.name.clone(), seed: sc.seed, cycles: 0, replay: "ready", notes }
+    Meta {
+        unit: unit.name(),
+        chip: sc.chip,
+        package: sc.package,
+        fclk: sc.fclk,
+        scenario: sc.name.clone(),
+        seed: sc.seed,
+        cycles: 0,
+        replay: "ready",
+        notes,
+    }
 }

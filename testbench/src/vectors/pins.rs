@@ -192,6 +192,8 @@ impl LineEncoder {
 pub struct Meta {
     pub unit: &'static str,
     pub chip: tmc429_model::Chip,
+    /// The package (`package` and its pin count `pins`: the `PINS` parameter of tmc429_chip).
+    pub package: tmc429_model::Package,
     pub fclk: u64,
     pub scenario: String,
     pub seed: u64,
@@ -208,11 +210,13 @@ impl Meta {
         let nc = layout.not_compared();
         let _ = write!(
             s,
-            "# tmc429 test vectors: docs/vectors.md\nformat 1\nunit {}\nchip {}\nchip_code {}\nfclk {}\n\
+            "# tmc429 test vectors: docs/vectors.md\nformat 1\nunit {}\nchip {}\nchip_code {}\npackage {}\npins {}\nfclk {}\n\
              scenario {}\nseed {}\ncycles {}\nwidth {}\nin_width {}\nout_width {}\nmask {}\nnot_compared {}\nreplay {}\n",
             self.unit,
             self.chip,
             self.chip.rtl_param(),
+            self.package,
+            self.package.pins(),
             self.fclk,
             self.scenario,
             self.seed,

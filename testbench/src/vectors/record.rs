@@ -10,6 +10,7 @@ use std::fmt::Write as _;
 use tmc429_model::events::{Event, EventDecoder};
 use tmc429_model::microstep;
 use tmc429_model::motor::{self, sext24};
+use tmc429_model::ramp;
 use tmc429_model::regmap::{self, Addr};
 use tmc429_model::{chain, script, Chip, Inputs, Outputs, Tmc429, PHASE_RAMP};
 
@@ -62,6 +63,7 @@ pub fn chip_layout() -> Layout {
     .without(RTL_PENDING_PINS)
 }
 
+/// One line of [`chip_layout`] values.
 fn pin_values(rst: bool, i: &Inputs, o: &Outputs) -> [u64; 22] {
     [
         rst,
@@ -110,6 +112,30 @@ impl Recorder for ChipPins {
     }
     fn finish(self: Box<Self>, meta: &Meta) -> Result<Vec<AtomicFile>, String> {
         self.w.finish(meta.clone())
+    }
+}
+
+/// A writer of the chip's pins in one of the tester forms (STIL, EVCD, pin VCD), line by line.
+pub trait PinForm {
+    /// One line of [`chip_layout`] values.
+    fn line(&mut self, v: &[u64; 22]) -> Result<(), String>;
+    /// Ends the file; it is returned not yet committed.
+    fn close(self) -> Result<AtomicFile, String>;
+}
+
+/// The chip's pins at every edge, written by a [`PinForm`].
+pub struct ChipForm<W>(pub W);
+
+impl<W: PinForm> Recorder for ChipForm<W> {
+    fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
+        self.0.line(&pin_values(true, &Inputs::default(), &chip.outputs()))
+    }
+    #[inline]
+    fn edge(&mut self, _chip: &Tmc429, inp: &Inputs, out: &Outputs) -> Result<(), String> {
+        self.0.line(&pin_values(false, inp, out))
+    }
+    fn finish(self: Box<Self>, _meta: &Meta) -> Result<Vec<AtomicFile>, String> {
+        Ok(vec![self.0.close()?])
     }
 }
 
@@ -202,6 +228,7 @@ pub fn chain_layout() -> Layout {
         input("cont_update_nx", 1),
         input("cw", 1),
         input("dgw", 1),
+        input("readback_clr", 1),
         input("cover_pos", 6),
         input("cover_len", 5),
         input("cover_datagram", 24),
@@ -285,6 +312,7 @@ impl ChainPins {
             nx.cont_update as u64,
             i.cw as u64,
             i.dgw as u64,
+            i.readback_clr as u64,
             i.cover_pos as u64,
             i.cover_len as u64,
             i.cover_datagram as u64,
@@ -402,9 +430,9 @@ pub fn ramp_layout() -> Layout {
 }
 
 /// One line of the ramp unit: the inputs `i` of an edge and the outputs after it
-/// ([`motor::ramp_ports`] of the motor state `m`).
-pub fn ramp_values(rst: bool, i: &motor::RampInputs, m: &motor::Motor) -> [u64; 31] {
-    let o = motor::ramp_ports(m, i);
+/// ([`ramp::ramp_ports`] of the motor state `m`).
+pub fn ramp_values(rst: bool, i: &ramp::RampInputs, m: &motor::Motor) -> [u64; 31] {
+    let o = ramp::ramp_ports(m, i);
     [
         rst as u64,
         i.run as u64,
@@ -450,7 +478,7 @@ pub struct RampPins {
     /// Lines of motors 1.. (encoded), and their count.
     rest: Vec<(Vec<u8>, u64)>,
     /// The inputs each motor sees before the next edge.
-    pre: Vec<motor::RampInputs>,
+    pre: Vec<ramp::RampInputs>,
 }
 
 impl RampPins {
@@ -458,7 +486,7 @@ impl RampPins {
         let layout = ramp_layout();
         Ok(RampPins { enc: LineEncoder::new(&layout), w: PinWriter::create(stem, layout)?, rest: Vec::new(), pre: Vec::new() })
     }
-    fn line(&mut self, m: usize, rst: bool, i: &motor::RampInputs, mo: &motor::Motor) -> Result<(), String> {
+    fn line(&mut self, m: usize, rst: bool, i: &ramp::RampInputs, mo: &motor::Motor) -> Result<(), String> {
         let v = ramp_values(rst, i, mo);
         if m == 0 {
             self.w.line(&v)
@@ -477,7 +505,7 @@ impl Recorder for RampPins {
         self.rest = vec![(Vec::new(), 0); n - 1];
         self.pre = (0..n).map(|m| chip.ramp_inputs(m)).collect();
         for m in 0..n {
-            self.line(m, true, &motor::RampInputs::default(), chip.motor(m))?;
+            self.line(m, true, &ramp::RampInputs::default(), chip.motor(m))?;
         }
         Ok(())
     }

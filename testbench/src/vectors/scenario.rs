@@ -13,7 +13,7 @@ use std::path::Path;
 
 use tmc429_model::regmap::{self, Addr};
 use tmc429_model::script::{self, Command, Line, Pin};
-use tmc429_model::{pmulpdiv, Chip, Inputs};
+use tmc429_model::{pmulpdiv, Chip, Inputs, Package};
 
 use crate::stimulus::{Driver, Profile, Stimulus};
 
@@ -63,6 +63,8 @@ impl PinRuns {
 pub struct Scenario {
     pub name: String,
     pub chip: Chip,
+    /// The package: the pins it lacks are tied off (C90); [`Package::full`] by default.
+    pub package: Package,
     pub fclk: u64,
     pub seed: u64,
     pub source: Source,
@@ -78,9 +80,9 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("reference-search", "motor 0 searches REF1 in VELOCITY_MODE, stops, is zeroed and moves off in RAMP_MODE"),
     ("ramp-modes", "RAMP_MODE, SOFT_MODE and VELOCITY_MODE moves, a reversal and HOLD_MODE with a v_actual write"),
     ("ramp-boundary", "v_max 2047 / a_max 2047, v_target -2048, a_max 0, v_min > v_max, a move across x = 2^23"),
-    ("ramp-p-examples", "RAMP_MODE moves with the pmul/pdiv of the [428] §8.11 method (digest §5.5 rows)"),
+    ("ramp-p-examples", "RAMP_MODE moves with the pmul/pdiv of the [428] §8.11 method (pmulpdiv.c of [429] §8.1.10.2.3)"),
     ("ramp-unit", "the ramp unit in few cycles: RAMP_MODE and SOFT_MODE with the [428] §8.11 p example 2047/0/0, a soft switch stop and the latch, VELOCITY_MODE at a_max 2047 across x = 2^23 and back, a_max 0, HOLD_MODE with a v_actual write of -2048, usrs 7, a ustep_count write"),
-    ("chain-datasheet", "Table 11-2 configuration, Table 12-2 LUT, the digest §5.2 datagrams and a cover datagram"),
+    ("chain-datasheet", "Table 11-2 configuration, Table 12-2 LUT, the datagrams they give and a cover datagram"),
     ("chain-unit", "the driver-chain master in few cycles: power-on Table 11-2 and LUT, clk2_div 0 (asymmetric SCK_S), a cover datagram of length 0 and one of 12 bits at position 3, i_scale %100, a datagram-word write (CDGW), SDI_S readback, a datagram aborted by en_sd and restarted"),
     ("tables", "lut unit: complete tables, every usrs, both directions, every i_scale, sine and rhomb LUT"),
     ("random", "the co-simulation's seeded random register traffic (--seed, --cycles)"),
@@ -194,6 +196,8 @@ fn chip_hold() -> B {
     b.m(1, 11, 0x0100).m(1, 0, 5).m(1, 1, 5).m(1, 11, 0x0101);
     b.m(2, 11, 0x0400).m(2, 1, 7).m(2, 1, 0).r(regmap::motor_a7(2, 11)).m(2, 11, 0);
     b.g(4, 0x100).pin(Pin::Refr2, false).wait(10).r(regmap::global_a7(14)).pin(Pin::Refr2, true);
+    // REFR3 low (r3 0 on the QFN32; the SOP24 lacks REFR3: its pull-up reads high, C90)
+    b.pin(Pin::Refr3, false).wait(10).r(regmap::global_a7(14)).pin(Pin::Refr3, true);
     b.g(4, 0x001).pin(Pin::Ref3, true).wait(10).r(regmap::global_a7(14)).pin(Pin::Ref3, false).g(4, 0);
     // power down, asleep for a while, the next frame wakes the chip
     b.g(8, 0).wait(200).r(regmap::global_a7(9)).r(regmap::global_a7(6));
@@ -248,7 +252,7 @@ fn ramp_boundary() -> B {
 
 fn ramp_p_examples() -> B {
     let mut b = B::default();
-    // digest §5.5: a_max 1000 rd 3 pd 3, 5 % → p_mul 237 pdiv 2; 2047/0/0, 5 % → 243/1;
+    // pmulpdiv.c ([429] §8.1.10.2.3): a_max 1000 rd 3 pd 3, 5 % → p_mul 237 pdiv 2; 2047/0/0, 5 % → 243/1;
     // 128/0/0, 0 % → 128/4 (p = 1). v_min > 0: the √-law aims one step short (C50) and v_min
     // carries the last step (C52).
     b.m(0, 2, 50).m(0, 3, 1000).p_of(0, 1000, 3, 3, 0.05).m(0, 0, 60);
@@ -264,7 +268,7 @@ const PEX_WAIT: u64 = 100_000;
 /// every frame), so each case takes a few frames.
 fn ramp_unit() -> B {
     let mut b = B::default();
-    // motor 0: RAMP_MODE, digest §5.5 row 2047/0/0 5 % (p_mul 243, pdiv 1), ustep_count write
+    // motor 0: RAMP_MODE, pmulpdiv.c row 2047/0/0 5 % (p_mul 243, pdiv 1), ustep_count write
     b.m(0, 2, 50).m(0, 3, 2047).p_of(0, 2047, 0, 0, 0.05).m(0, 15, 0x80).m(0, 0, 60);
     // motor 1: SOFT_MODE with SOFT_STOP and the same parameters, latch armed, moving left
     b.m(1, 2, 10).m(1, 3, 2047).p_of(1, 2047, 0, 0, 0.05).m(1, IDX_RM, 0x400 | 1).m(1, 14, 0);
@@ -357,6 +361,7 @@ pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Opt
             return Some(Scenario {
                 name: name.into(),
                 chip,
+                package: Package::full(chip),
                 fclk,
                 seed,
                 source: Source::Random { cycles, profile: Profile::Registers },
@@ -371,6 +376,7 @@ pub fn builtin(name: &str, chip: Chip, fclk: u64, seed: u64, cycles: u64) -> Opt
     Some(Scenario {
         name: name.into(),
         chip,
+        package: Package::full(chip),
         fclk,
         seed: 0,
         source: Source::Script { lines: b.lines, sck_half: SCK_HALF },
@@ -383,13 +389,14 @@ pub const SCK_HALF: u32 = 3;
 
 /// A scenario file: a datagram script (`tmc429 spi` format).
 pub fn from_file(path: &Path, chip: Chip, fclk: u64, sck_half: u32) -> Result<Scenario, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    let text = tmc429_model::text::read_file(path)?;
     let name = path.display().to_string();
     let lines = script::parse(&text, &name).map_err(|errs| errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n"))?;
     let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "script".into());
     Ok(Scenario {
         name: stem,
         chip,
+        package: Package::full(chip),
         fclk,
         seed: 0,
         source: Source::Script { lines, sck_half },

@@ -171,6 +171,11 @@ impl Compare {
         Compare((1u64 << N_SIGNALS) - 1)
     }
 
+    /// The output pins only (a design under test without the probe ports).
+    pub fn pins() -> Compare {
+        Compare((1u64 << N_PINS) - 1)
+    }
+
     /// What the RTL of this issue implements: everything except the driver-chain pins
     /// (nSCS_S, SCK_S, SDO_S, SDI_S out, nSCS2, nSCS3) and the chain probes.
     pub fn without_chain() -> Compare {

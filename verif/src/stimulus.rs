@@ -110,7 +110,7 @@ pub enum Profile {
     /// polarities, csCommonIndividual, cover datagrams and the Step/Dir bits of
     /// if_configuration (en_sd, step_half, inv_stp, inv_dir).
     Drivers,
-    /// Everything moves (testbench/src/motion_stim.rs): moves in all four ramp modes with valid
+    /// Everything moves (verif/src/motion_stim.rs): moves in all four ramp modes with valid
     /// and boundary parameters, target and mode changes during motion, reference searches with
     /// switch events and latching, current scaling, driver-chain configurations, cover
     /// datagrams, continuous update, refmux, Step/Dir — mixed with the traffic of `Full`.
@@ -357,7 +357,7 @@ pub fn datagram_strategy(chip: Chip) -> impl Strategy<Value = u32> {
             4 => 0u32..0x10,     // motor 1
             3 => 0x30u32..0x40,  // globals
             1 => 0x10u32..0x30,  // unused motor 2, 3
-            1 => 0x40u32..0x80,  // no RAM: unused
+            1 => 0x40u32..0x80,  // RAM (C30)
         ]
         .boxed()
     } else {
