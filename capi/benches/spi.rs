@@ -1,4 +1,4 @@
-//! The C path against the Rust path for the same SPI traffic (issue 9: C at most 2× slower).
+//! The C path against the Rust path for the same SPI traffic (the C library's budget: at most 2× slower).
 //!
 //! Traffic: the start-up of examples/c (18 driver-RAM words, 32 LUT words, global parameters,
 //! 7 registers for each of 3 motors), 10 read-backs and 8 status-only 8-bit reads: 90 frames,

@@ -20,8 +20,10 @@
  *    Different handles may be used from different threads concurrently; calls on one handle
  *    from several threads are serialized.
  */
-#ifndef TMC429_H
-#define TMC429_H
+/* The guard is this library's own: vendor drivers' TMC429.h use TMC429_H, and both headers may be
+ * included in one test. */
+#ifndef TMC429_CAPI_H_INCLUDED
+#define TMC429_CAPI_H_INCLUDED
 
 #include <stddef.h>
 #include <stdint.h>
@@ -30,7 +32,7 @@
 extern "C" {
 #endif
 
-#define TMC429_ABI_VERSION 1
+#define TMC429_ABI_VERSION 3
 
 /* Return codes. */
 #define TMC429_OK 0
@@ -39,6 +41,7 @@ extern "C" {
 #define TMC429_ERR_LENGTH (-3)   /* SPI length 0 or > 4, zero capacity, buffer too small */
 #define TMC429_ERR_ARG (-4)      /* argument out of range (variant, fclk, SCK, pin, level, motor, kind) */
 #define TMC429_ERR_INTERNAL (-5) /* internal error caught; the handle is retired */
+#define TMC429_ERR_STATE (-6)    /* chip select: byte/deselect while not selected, select/frame while selected */
 
 /* Chip variants (the RTL's CHIP parameter). */
 #define TMC429_CHIP_TMC428 0
@@ -49,7 +52,7 @@ extern "C" {
 #define TMC429_PIN_REF1 0
 #define TMC429_PIN_REF2 1
 #define TMC429_PIN_REF3 2
-#define TMC429_PIN_REFR1 3 /* TMC429 only; pulled up: 1 after create */
+#define TMC429_PIN_REFR1 3 /* TMC429 only; pulled up: 1 (switch active) after create, see docs */
 #define TMC429_PIN_REFR2 4
 #define TMC429_PIN_REFR3 5
 #define TMC429_PIN_SDI_S 6 /* serial data from the driver chain */
@@ -137,8 +140,10 @@ int tmc429_get_sck_half(tmc429_handle_t h, uint32_t *out);
 
 /* One SPI frame of len (1..4) bytes, MSB first (SPI mode 3): nSCS_C low for 8*len SCK_C periods,
  * then high. rx receives the len bytes the chip sent (rx may equal tx). Only a 4-byte frame is a
- * datagram the chip executes; a 1-byte frame reads the status byte. The time the frame takes
- * (2 + 16*len half periods) passes on the chip. */
+ * datagram the chip executes; a 1-byte frame reads the status byte, 2- and 3-byte frames return
+ * the status byte and the first data bytes and execute nothing. The time the frame takes
+ * (2 + 16*len half periods) passes on the chip. While tmc429_spi_select holds nSCS_C low:
+ * TMC429_ERR_STATE. */
 int tmc429_spi_transfer(tmc429_handle_t h, const uint8_t *tx, uint8_t *rx, size_t len);
 
 /* Advances CLK edges with the input pins as they are. */
@@ -186,8 +191,86 @@ int tmc429_events_dropped(tmc429_handle_t h, uint64_t *out);
  * above 2, or negative/level other than 0/1 is TMC429_ERR_ARG. */
 int tmc429_event_format(const tmc429_event_t *ev, char *buf, size_t cap);
 
+/* ---- Byte-wise SPI and register peek (ABI 3) -------------------------------------------------
+ * For drivers that send one byte per SPI call with chip select held across calls and need each
+ * reply byte at once (Trinamic's ReadWriteSPI(byte, last), examples/c/vendor_api.c). */
+
+/* Pulls nSCS_C low; one SCK_C half period passes. TMC429_ERR_STATE if it is low already. */
+int tmc429_spi_select(tmc429_handle_t h);
+
+/* 8 SCK_C periods with nSCS_C low, MSB first; *rx receives the byte the chip sent meanwhile
+ * (status byte first, then data bits 23..0). TMC429_ERR_STATE unless selected. */
+int tmc429_spi_transfer_byte(tmc429_handle_t h, uint8_t tx, uint8_t *rx);
+
+/* Raises nSCS_C: the chip executes the datagram at this rising edge if exactly 32 bits were
+ * shifted since the select (fewer or more: nothing); one SCK_C half period passes.
+ * TMC429_ERR_STATE unless selected. */
+int tmc429_spi_deselect(tmc429_handle_t h);
+
+/* The 24 data bits a read datagram of address (RRS and the 6 address bits, datagram bits 31..25:
+ * SMDA<<4 | IDX, $30 | JDX, $40 | RAM address) would return now, without SPI traffic and without
+ * CLK time (for test assertions). Unused addresses read 0; address > 127 is TMC429_ERR_ARG. */
+int tmc429_peek_register(tmc429_handle_t h, uint32_t address, uint32_t *data);
+
+/* ---------------------------------------------------------------------------------------------
+ * Pin level (capi/src/pins.rs): one call per CLK edge, for SystemVerilog DPI-C (capi/sv/
+ * tmc429_pkg.sv) and other cycle-based testbenches; and the seeded stimulus of `tmc429 cosim`
+ * with its transaction log and first-mismatch report. docs/c-api.md, docs/verify-your-rtl.md.
+ *
+ * Input word, bit 0..9: nSCS_C, SCK_C, SDI_C, SDI_S, REF1, REF2, REF3, REFR1, REFR2, REFR3.
+ * Output word, bit 0..10: nINT_SDO_C, SDOZ_C, SDOZ_C enable, nSCS_S, SCK_S, SDO_S, SDI_S out,
+ * SDI_S enable, nSCS2, nSCS3, POSCMP.
+ */
+#define TMC429_INPUT_PINS 10
+#define TMC429_OUTPUT_PINS 11
+#define TMC429_PROBE_COUNT 37 /* probes of tmc429_tick_pins; names: tmc429_probe_name */
+#define TMC429_IDLE_INPUTS 0x383 /* idle bus, switches open: nSCS_C, SCK_C, REFR1..3 high */
+
+/* Stimulus profiles (`tmc429 cosim --profile`). */
+#define TMC429_PROFILE_MOTION 0
+#define TMC429_PROFILE_MOTION_CORE 1
+#define TMC429_PROFILE_DRIVERS 2
+#define TMC429_PROFILE_REGISTERS 3
+#define TMC429_PROFILE_FULL 4
+
+/* One rising CLK edge with the input pins of `inputs` (bits above 9 must be 0, else
+ * TMC429_ERR_ARG); the output word after it in *outputs and, unless probes is NULL, the
+ * TMC429_PROBE_COUNT probes (signed ones as two's complement of their width). The pins stay as
+ * given until the next call or an SPI transfer. Turn events off for speed (tmc429_events_enable). */
+int tmc429_tick_pins(tmc429_handle_t h, uint32_t inputs, uint32_t *outputs, uint64_t *probes);
+
+/* The output word after the last edge (after create or reset: the reset state). */
+int tmc429_output_word(tmc429_handle_t h, uint32_t *outputs);
+
+/* Name of probe `index` as the co-simulation's VCD scopes it ("motor0.x_target", "top.status");
+ * "" for an index >= TMC429_PROBE_COUNT. Static, never NULL. */
+const char *tmc429_probe_name(uint32_t index);
+
+/* The stimulus of `tmc429 cosim --chip VARIANT --profile PROFILE --seed SEED`: the same seed, the
+ * same pins edge for edge. Its handles are distinct from chip handles. */
+int tmc429_stim_create(int variant, int profile, uint64_t seed, tmc429_handle_t *out);
+
+int tmc429_stim_destroy(tmc429_handle_t h);
+
+/* The input word of the next edge. model_outputs, dut_outputs: both sides' output words after
+ * the last edge (before the first: the reset states), for the replies in the transaction log.
+ * An output word above bit 10 is TMC429_ERR_ARG. */
+int tmc429_stim_next(tmc429_handle_t h, uint32_t model_outputs, uint32_t dut_outputs, uint32_t *inputs);
+
+/* Compares the design's output word after the last edge with the model's (SDOZ_C and SDI_S data
+ * only while both enable them): 0 = equal, 1 = the first mismatch or any check after it. */
+int tmc429_stim_check(tmc429_handle_t h, uint32_t model_outputs, uint32_t dut_outputs);
+
+/* Edges, SPI frames and pin-change transactions so far. */
+int tmc429_stim_counts(tmc429_handle_t h, uint64_t *cycles, uint64_t *frames, uint64_t *pin_changes);
+
+/* The first mismatch's report as `tmc429 cosim` prints it, `label` (NULL: "dut") naming the
+ * design; "" without a mismatch or for an invalid handle. Owned by the handle, valid until the
+ * next call on it, never NULL. */
+const char *tmc429_stim_report(tmc429_handle_t h, const char *label);
+
 #ifdef __cplusplus
 }
 #endif
 
-#endif /* TMC429_H */
+#endif /* TMC429_CAPI_H_INCLUDED */

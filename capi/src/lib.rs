@@ -1,6 +1,6 @@
 //! C ABI of the golden model: a virtual TMC428/TMC429/TMC4210 on the other end of a firmware's
-//! SPI bus (issue 9). The header is `capi/include/tmc429.h`; `tests/header.rs` checks it against
-//! the `extern "C"` items of this file. User documentation: `docs/c-api.md`.
+//! SPI bus. The header is `capi/include/tmc429.h`; `tests/header.rs` checks it against
+//! the `extern "C"` items of every module. User documentation: `docs/c-api.md`.
 //!
 //! # Conventions
 //! - Every function returns `int`: `TMC429_OK` (0) or a non-negative count where documented on
@@ -19,6 +19,9 @@
 //! destroyed chip. Different handles may be used from different threads at the same time; calls
 //! on one handle from several threads are serialized by a lock.
 
+mod pins;
+pub use pins::*;
+
 use std::collections::{BTreeMap, VecDeque};
 use std::ffi::{c_char, c_int, c_uint};
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -28,11 +31,16 @@ use tmc429_model::events::{Event, EventDecoder};
 use tmc429_model::host::{Host, MIN_SCK_HALF};
 use tmc429_model::{Chip, Tmc429};
 
+mod bytewise;
+pub use bytewise::*;
+
 // ---------------------------------------------------------------------------------------------
 // Constants (mirrored as #defines in tmc429.h; tests/header.rs checks every value).
 
-/// Version of this ABI; bumped on any incompatible change of a signature or struct.
-pub const TMC429_ABI_VERSION: u32 = 1;
+/// Version of this ABI; bumped on any change of the interface: a function or return code added,
+/// a signature or struct changed. 2: the pin level (`pins`); 3: byte-wise SPI and the register
+/// peek (`bytewise`).
+pub const TMC429_ABI_VERSION: u32 = 3;
 
 pub const TMC429_OK: c_int = 0;
 /// A pointer argument is NULL.
@@ -45,6 +53,9 @@ pub const TMC429_ERR_LENGTH: c_int = -3;
 pub const TMC429_ERR_ARG: c_int = -4;
 /// An internal error (a panic was caught); the handle is retired and only destroy works on it.
 pub const TMC429_ERR_INTERNAL: c_int = -5;
+/// The call does not fit the chip-select state: a byte transfer or deselect while nSCS_C is high,
+/// a select or a whole-frame transfer while it is low.
+pub const TMC429_ERR_STATE: c_int = -6;
 
 pub const TMC429_CHIP_TMC428: c_int = 0;
 pub const TMC429_CHIP_TMC429: c_int = 1;
@@ -248,6 +259,7 @@ pub extern "C" fn tmc429_strerror(code: c_int) -> *const c_char {
         TMC429_ERR_LENGTH => b"length out of range (SPI transfer: 1..4 bytes) or buffer too small\0",
         TMC429_ERR_ARG => b"argument out of range\0",
         TMC429_ERR_INTERNAL => b"internal error (handle retired)\0",
+        TMC429_ERR_STATE => b"wrong chip-select state (byte transfer without select, or select twice)\0",
         c if c >= 0 => b"success\0",
         _ => b"unknown error code\0",
     };
@@ -382,7 +394,12 @@ pub unsafe extern "C" fn tmc429_spi_transfer(h: u64, tx: *const u8, rx: *mut u8,
             // SAFETY: tx is non-null and valid for `len` bytes (caller's contract).
             value = (value << 8) | unsafe { *tx.add(i) } as u32;
         }
-        let reply = with_sim(h, |s| Ok(s.host.frame(value, 8 * len as u32)))?;
+        let reply = with_sim(h, |s| {
+            if s.host.selected() {
+                return Err(TMC429_ERR_STATE);
+            }
+            Ok(s.host.frame(value, 8 * len as u32))
+        })?;
         for i in 0..len {
             // SAFETY: rx is non-null and valid for `len` bytes; tx is no longer read.
             unsafe { *rx.add(i) = (reply >> (8 * (len - 1 - i))) as u8 };

@@ -1,5 +1,5 @@
 //! The C ABI called as C calls it, asserting the datasheet's values: the TMC428 §6.5 datagram
-//! examples (replies with the INT-corrected status $15, spec-digest §5.1), type_version $429101,
+//! examples (replies with the INT-corrected status $15, contract erratum E1), type_version $429101,
 //! the 8-bit status read, frame timing, INT, driver-chain and step events in `tmc429 spi --events`
 //! form, and every misuse (null, lengths 0 and 5, bad arguments, destroyed handle) returning its
 //! error code.
@@ -134,11 +134,12 @@ fn int_events_from_a_reference_switch() {
         let mut o = tmc429_outputs_t::default();
         assert_eq!(tmc429_get_outputs(h, &mut o), TMC429_OK);
         assert_eq!(o.nint_sdo_c, 0, "nINT low");
-        // Driver-chain pins idle as after reset (contract C2): nSCS_S, SCK_S, nSCS2, nSCS3 high,
-        // SDO_S low; as STEP1..3 = SDO_S, nSCS_S, nSCS2 and DIR1..3 = SCK_S, SDI_S, nSCS3.
+        // Driver-chain pins idle as after reset (contract C2, [429] §8.2.4 note: logic high
+        // until configured): nSCS_S, SCK_S, SDO_S, nSCS2, nSCS3 high, SDI_S an input (0); as
+        // STEP1..3 = SDO_S, nSCS_S, nSCS2 and DIR1..3 = SCK_S, SDI_S, nSCS3.
         let (mut step, mut dir) = (0u8, 0u8);
         assert_eq!(tmc429_get_step_dir(h, &mut step, &mut dir), TMC429_OK);
-        assert_eq!((step, dir), (0b110, 0b101));
+        assert_eq!((step, dir), (0b111, 0b101));
         // Clear the flag (W1C) with the mask kept: INT falls when the datagram executes.
         dg(h, 0x1600_4040);
         let ev = drain(h);
@@ -301,7 +302,7 @@ fn drain_all(h: u64) -> Vec<tmc429_event_t> {
 }
 
 /// Driver-chain datagrams through the C queue: continuous update with the TMC429's power-on
-/// chain configuration sends the 36-bit datagram $87F87F87F (spec-digest §5.2); the requests of
+/// chain configuration sends the 36-bit datagram $87F87F87F (TMC429 §11.4.2 configuration, §11.5 LUT); the requests of
 /// the three motors come 341 ramp ticks apart (C83: reset offsets 0, 341, 682 of a 1024-tick
 /// counter), 341 · 32 = 10912 CLK at ramp_div 0.
 #[test]

@@ -1,11 +1,28 @@
-//! Checks `include/tmc429.h` against the Rust side (`src/lib.rs`): every `extern "C"` function
+//! Checks `include/tmc429.h` against the Rust side (every file of `src/`): every `extern "C"` function
 //! with the same parameter names and C types, every `#[repr(C)]` struct field by field, every
 //! `TMC429_*` constant by value, and nothing more or less in either file.
 
 use std::collections::BTreeMap;
 
-const RUST: &str = include_str!("../src/lib.rs");
 const HEADER: &str = include_str!("../include/tmc429.h");
+
+/// The Rust sources of the library, every module of `src/`.
+fn rust_sources() -> String {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files: Vec<_> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension() == Some("rs".as_ref())).collect();
+    files.sort();
+    files.iter().map(|p| std::fs::read_to_string(p).unwrap()).collect::<Vec<_>>().join("\n")
+}
+
+/// The header's include guard: not `TMC429_H`, which vendor drivers' `TMC429.h` use.
+const GUARD: &str = "TMC429_CAPI_H_INCLUDED";
+
+#[test]
+fn include_guard_is_unique() {
+    assert!(HEADER.contains(&format!("#ifndef {GUARD}\n#define {GUARD}\n")));
+    assert!(!HEADER.contains("TMC429_H\n"));
+}
 
 /// The C spelling of a Rust type used in the ABI.
 fn c_type(rust: &str) -> String {
@@ -45,7 +62,7 @@ type Sig = (String, Vec<(String, String)>); // return type, [(name, type)]
 
 fn rust_functions() -> BTreeMap<String, Sig> {
     let mut m = BTreeMap::new();
-    let rust = RUST.replace("pub unsafe extern \"C\" fn ", "pub extern \"C\" fn ");
+    let rust = rust_sources().replace("pub unsafe extern \"C\" fn ", "pub extern \"C\" fn ");
     for part in rust.split("pub extern \"C\" fn ").skip(1) {
         let head = &part[..part.find('{').unwrap()];
         let name = head[..head.find('(').unwrap()].trim().to_string();
@@ -121,7 +138,7 @@ fn handle_typedef_is_u64() {
 
 fn rust_structs() -> BTreeMap<String, Vec<(String, String)>> {
     let mut m = BTreeMap::new();
-    for part in RUST.split("#[repr(C)]").skip(1) {
+    for part in rust_sources().split("#[repr(C)]").skip(1) {
         let i = part.find("pub struct ").unwrap() + "pub struct ".len();
         let name = part[i..i + part[i..].find(' ').unwrap()].to_string();
         let body = &part[part.find('{').unwrap() + 1..part.find('}').unwrap()];
@@ -168,19 +185,22 @@ fn every_struct_matches() {
 
 fn parse_int(s: &str) -> i64 {
     let s = s.trim().trim_start_matches('(').trim_end_matches(')').replace('_', "");
-    s.parse().unwrap_or_else(|_| panic!("not an integer: {s}"))
+    match s.strip_prefix("0x") {
+        Some(hex) => i64::from_str_radix(hex, 16).unwrap_or_else(|_| panic!("not an integer: {s}")),
+        None => s.parse().unwrap_or_else(|_| panic!("not an integer: {s}")),
+    }
 }
 
 #[test]
 fn every_constant_matches() {
     let mut r = BTreeMap::new();
-    for l in RUST.lines().filter(|l| l.starts_with("pub const TMC429_")) {
+    for l in rust_sources().lines().filter(|l| l.starts_with("pub const TMC429_")) {
         let (lhs, v) = l.trim_end_matches(';').split_once('=').unwrap();
         let name = lhs["pub const ".len()..lhs.find(':').unwrap()].to_string();
         r.insert(name, parse_int(v));
     }
     let mut h = BTreeMap::new();
-    for l in HEADER.lines().filter(|l| l.starts_with("#define TMC429_") && !l.starts_with("#define TMC429_H")) {
+    for l in HEADER.lines().filter(|l| l.starts_with("#define TMC429_") && !l.starts_with(&format!("#define {GUARD}"))) {
         let l = l.split("/*").next().unwrap();
         let mut it = l.split_whitespace().skip(1);
         let name = it.next().unwrap().to_string();

@@ -9,18 +9,8 @@
 #include <string.h>
 
 #include "tmc429.h"
+#include "check.h"
 #include "tmc429_drv.h"
-
-static int failures;
-
-#define CHECK_EQ(what, got, want)                                                               \
-    do {                                                                                        \
-        long long g_ = (long long)(got), w_ = (long long)(want);                                \
-        if (g_ != w_) {                                                                         \
-            printf("FAIL %s: got 0x%llX, want 0x%llX\n", what, g_, w_);                         \
-            failures++;                                                                         \
-        }                                                                                       \
-    } while (0)
 
 /* ---- the board: SPI and delay on the virtual chip ---- */
 static int board_spi(void *ctx, const uint8_t *tx, uint8_t *rx, size_t len)
@@ -35,13 +25,6 @@ static void board_delay_us(void *ctx, uint32_t us)
 {
     tmc429_advance_us(*(tmc429_handle_t *)ctx, us);
 }
-
-/* Table 11-2 of the TMC428 datasheet: three TMC236 drivers (the TMC429 §11.4 example). */
-static const uint8_t table_11_2[36] = {
-    0x10, 0x05, 0x04, 0x03, 0x02, 0x06, 0x10, 0x0D, 0x0C, 0x0B, 0x0A, 0x2E,
-    0x10, 0x05, 0x04, 0x03, 0x02, 0x06, 0x10, 0x0D, 0x0C, 0x0B, 0x0A, 0x2E,
-    0x07, 0x05, 0x04, 0x03, 0x02, 0x06, 0x0F, 0x0D, 0x0C, 0x0B, 0x0A, 0x2E,
-};
 
 int main(void)
 {
@@ -80,7 +63,7 @@ int main(void)
     CHECK_EQ("type_version", drv429_read(&d, DRV429_TYPE_VERSION), 0x429101u);
 
     /* TMC429 §12.1: start-up sequence. */
-    drv429_init_chain(&d, table_11_2, 2);
+    drv429_init_chain(&d, drv429_table_11_2, 2);
     for (m = 0; m < 3; m++) {
         int32_t pp = drv429_init_motor(&d, m, &cfg);
         CHECK_EQ("pmul/pdiv of a_max 100, ramp_div 7, pulse_div 3", pp, 0xBD09);
@@ -88,7 +71,7 @@ int main(void)
 
     /* Read-backs. */
     for (m = 0; m < 18; m++) {
-        uint32_t want = (uint32_t)(table_11_2[2 * m + 1]) << 8 | table_11_2[2 * m];
+        uint32_t want = (uint32_t)(drv429_table_11_2[2 * m + 1]) << 8 | drv429_table_11_2[2 * m];
         CHECK_EQ("driver RAM word", drv429_read(&d, DRV429_RAM(m)), want);
     }
     CHECK_EQ("LUT word 0", drv429_read(&d, DRV429_RAM(32)), 0x0200);   /* y(1)=2, y(0)=0 */

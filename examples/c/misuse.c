@@ -49,6 +49,10 @@ static void all_calls(tmc429_handle_t h, int want)
     EXPECT(tmc429_events_pending(h, &sz), want);
     EXPECT(tmc429_events_drain(h, ev, 2) > 0 ? 0 : tmc429_events_drain(h, ev, 2), want);
     EXPECT(tmc429_events_dropped(h, &u64), want);
+    EXPECT(tmc429_peek_register(h, 0x39, &u32), want);
+    EXPECT(tmc429_spi_select(h), want);
+    EXPECT(tmc429_spi_transfer_byte(h, 0, &u8a), want);
+    EXPECT(tmc429_spi_deselect(h), want);
 }
 
 int main(void)
@@ -56,6 +60,7 @@ int main(void)
     tmc429_handle_t h = 0, h2 = 0;
     uint8_t buf[8] = {0}, rx[8];
     char line[64];
+    uint32_t w = 0;
     tmc429_event_t ev = {0};
 
     /* create */
@@ -88,6 +93,17 @@ int main(void)
     EXPECT(tmc429_events_dropped(h, NULL), TMC429_ERR_NULL);
     EXPECT(tmc429_event_format(NULL, line, sizeof line), TMC429_ERR_NULL);
     EXPECT(tmc429_event_format(&ev, NULL, sizeof line), TMC429_ERR_NULL);
+    /* chip select: bytes and deselect need a select, a select or a whole frame needs none */
+    EXPECT(tmc429_spi_transfer_byte(h, 0, buf), TMC429_ERR_STATE);
+    EXPECT(tmc429_spi_deselect(h), TMC429_ERR_STATE);
+    EXPECT(tmc429_spi_select(h), TMC429_OK);
+    EXPECT(tmc429_spi_select(h), TMC429_ERR_STATE);
+    EXPECT(tmc429_spi_transfer(h, buf, rx, 4), TMC429_ERR_STATE);
+    EXPECT(tmc429_spi_transfer_byte(h, 0, NULL), TMC429_ERR_NULL);
+    EXPECT(tmc429_spi_deselect(h), TMC429_OK);
+    EXPECT(tmc429_peek_register(h, 0, NULL), TMC429_ERR_NULL);
+    EXPECT(tmc429_peek_register(h, 128, &w), TMC429_ERR_ARG);
+    EXPECT(tmc429_peek_register(h, 0xFFFFFFFFu, &w), TMC429_ERR_ARG);
     /* out-of-range arguments */
     EXPECT(tmc429_set_sck_half(h, 2), TMC429_ERR_ARG);
     EXPECT(tmc429_set_sck_half(h, 0), TMC429_ERR_ARG);

@@ -73,6 +73,9 @@ void drv429_move_to(drv429_t *d, int motor, int32_t x);
 /* Polls the status byte until xEQt of every motor in mask is set; returns 0, or -1 on timeout. */
 int drv429_wait_reached(drv429_t *d, unsigned motor_mask, uint32_t poll_us, uint32_t timeout_us);
 
+/* TMC428 Table 11-2: driver-chain RAM cells for three TMC236 drivers (the TMC429 §11.4 example). */
+extern const uint8_t drv429_table_11_2[36];
+
 /* Table 12-2 microstep value y(i) = int(1/2 + 64 sin(pi i/128)), 63 where that is 64. */
 uint8_t drv429_lut(int i);
 
