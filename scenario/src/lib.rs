@@ -3,6 +3,8 @@
 //! GTKWave save files, test vectors, plots in physical units, the unit calculator of
 //! `tmc429 calc`, and the built-in demo.
 
+pub mod calc;
+pub mod capture;
 pub mod demo;
 pub mod gtkw;
 pub mod plot;

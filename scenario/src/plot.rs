@@ -10,6 +10,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
+use tmc429_testbench::vectors::files::Staged;
+
 use crate::run::Report;
 
 /// Registered under the generic family name, which SVG viewers also understand.
@@ -36,25 +38,22 @@ pub fn series_name(m: usize) -> String {
 /// Writes the plot of a run to `path` (`.svg` or `.png`), through a temporary file.
 pub fn write(report: &Report, path: &Path) -> Result<(), String> {
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-    let tmp = crate::run::tmp_path(path);
+    let staged = Staged::new(path);
+    let tmp = staged.tmp();
     let res = match ext.as_deref() {
         Some("svg") => {
-            let root = SVGBackend::new(&tmp, (1000, 900)).into_drawing_area();
+            let root = SVGBackend::new(tmp, (1000, 900)).into_drawing_area();
             draw(report, &root).and_then(|_| root.present().map_err(|e| e.to_string()))
         }
         Some("png") => {
-            let root = BitMapBackend::new(&tmp, (1000, 900)).into_drawing_area();
+            let root = BitMapBackend::new(tmp, (1000, 900)).into_drawing_area();
             draw(report, &root).and_then(|_| root.present().map_err(|e| e.to_string()))
         }
         _ => return Err(format!("{}: plot format by extension: expected .svg or .png", path.display())),
     };
-    match res {
-        Ok(()) => std::fs::rename(&tmp, path).map_err(|e| format!("{}: cannot write: {e}", path.display())),
-        Err(e) => {
-            let _ = std::fs::remove_file(&tmp);
-            Err(format!("{}: cannot write the plot: {e}", path.display()))
-        }
-    }
+    // dropped on error, `staged` removes what was written
+    res.map_err(|e| format!("{}: cannot write the plot: {e}", path.display()))?;
+    staged.commit().map(drop)
 }
 
 fn draw<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB, Shift>) -> Result<(), String>

@@ -4,7 +4,7 @@
 //! same on every engine.
 
 use std::collections::VecDeque;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use tmc429_model::events::{Event as PinEvent, EventDecoder};
 use tmc429_model::regmap::{self, Access, Space};
@@ -12,7 +12,7 @@ use tmc429_model::{Chip, Outputs, Probes, Tmc429};
 use tmc429_testbench::cosim::{Mismatch, Outcome, TxnRecord, HISTORY};
 use tmc429_testbench::rtl::{Rtl, Variant};
 use tmc429_testbench::signals::{agree, diff, flatten, Compare, SIGNALS};
-use tmc429_testbench::stimulus::{Driver, Event, Frame, Txn};
+use tmc429_testbench::stimulus::{Driver, Event, Frame, Phase, Txn};
 use tmc429_testbench::vectors::scenario::PinRuns;
 
 use crate::scenario::{fmt_time, Action, Check, Condition, Scenario, Trigger, WriteData, PINS};
@@ -268,13 +268,14 @@ struct Queued {
 }
 
 /// Register values as the scenario last wrote them (power-on values at first): the base of
-/// field writes, and the dividers for physical units.
-struct Shadow {
+/// field writes, and the dividers for physical units. The Python package's virtual µC writes
+/// fields the same way.
+pub struct Shadow {
     words: [u32; 128],
 }
 
 impl Shadow {
-    fn new(chip: Chip) -> Shadow {
+    pub fn new(chip: Chip) -> Shadow {
         let mut words = [0u32; 128];
         for (a7, w) in words.iter_mut().enumerate() {
             if let Some((r, _)) = regmap::lookup(chip, a7 as u8) {
@@ -290,7 +291,7 @@ impl Shadow {
         (regmap::f::PULSE_DIV.get(w), regmap::f::RAMP_DIV.get(w), regmap::f::USRS.get(w))
     }
     /// The data word of a write, from the shadow; updates the shadow.
-    fn resolve(&mut self, w: &crate::scenario::Write) -> u32 {
+    pub fn resolve(&mut self, w: &crate::scenario::Write) -> u32 {
         let old = self.words[w.a7 as usize];
         // W1C fields write 0 (keep the flag) unless named
         let w1c = w.reg.fields.iter().filter(|f| f.access == Access::W1c).fold(0, |m, f| m | f.mask());
@@ -333,11 +334,10 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
     let mut mismatch: Option<String> = None;
     let mut pins = opt.record_pins.then(PinRuns::new);
 
-    let tmp_vcd = opt.vcd.as_ref().map(|p| tmp_path(p));
-    let mut vcd = match &tmp_vcd {
+    let mut vcd = match &opt.vcd {
         Some(p) => Some(
             VcdWriter::create(p, sc.fclk, &format!("tmc429 run {}: {} on {}", sc.name, chip, opt.engine.name()), cosim)
-                .map_err(|e| format!("{}: cannot write: {e}", opt.vcd.as_ref().unwrap().display()))?,
+                .map_err(|e| format!("{}: cannot write: {e}", p.display()))?,
         ),
         None => None,
     };
@@ -379,13 +379,14 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
     }
 
     // the checks after edge `cycle` (0 = before the first edge)
-    let mut after_edge = |cycle: u64,
-                          p: &Probes,
-                          o: &Outputs,
-                          queue: &mut VecDeque<Queued>,
-                          drv: &mut Driver,
-                          shadow: &mut Shadow,
-                          results: &mut Vec<Option<ExpectResult>>| {
+    let after_edge = |cycle: u64,
+                      p: &Probes,
+                      o: &Outputs,
+                      queue: &mut VecDeque<Queued>,
+                      drv: &mut Driver,
+                      shadow: &mut Shadow,
+                      fired: &mut [bool],
+                      results: &mut [Option<ExpectResult>]| {
         for (i, ev) in sc.events.iter().enumerate() {
             if fired[i] {
                 continue;
@@ -437,7 +438,7 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
                             passed: true,
                             detail: format!("at {}", fmt_time(sc.seconds(cycle))),
                         });
-                    } else if cycle > after + within {
+                    } else if cycle > after.saturating_add(*within) {
                         results[i] = Some(ExpectResult { name: e.name.clone(), line: e.line, passed: false, detail: "not reached".into() });
                     }
                 }
@@ -445,10 +446,21 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
             }
         }
     };
-    after_edge(0, &mp, &mo, &mut queue, &mut drv, &mut shadow, &mut results);
+    after_edge(0, &mp, &mo, &mut queue, &mut drv, &mut shadow, &mut fired, &mut results);
+    // The first edge after which `after_edge` has work (every edge while a condition is watched).
+    let mut due = next_check(sc, &fired, &results, 0);
 
     let mut cycles = 0u64;
+    // Edges the model alone can run (no VCD, pins, RTL or frame in flight): see `Idle::edges`.
+    let plain = sim.rtl.is_none() && vcd.is_none() && pins.is_none();
     while cycles < sc.duration && mismatch.is_none() {
+        if plain && queue.is_empty() && drv.phase() == Phase::Idle && drv.ready() && drv.frame().is_none() {
+            if let (Some(m), Some(c)) = (sim.model.as_mut(), due) {
+                let limit = c.min(next_sample).min(sc.duration);
+                let run = Idle { inputs: drv.inputs, limit, duration: sc.duration };
+                mo = run.edges(m, &mut cycles, &mut stats, &mut decoder, &mut datagrams, &mut step_pulses, progress).unwrap_or(mo);
+            }
+        }
         let n = cycles;
         if drv.ready() {
             if let Some(q) = queue.pop_front() {
@@ -482,14 +494,17 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
             Event::None => {}
         }
         // one edge
+        // The probes are read only in the edges that use them: the VCD, the co-simulation, a
+        // condition or check of the scenario, a sample; the statistics read the motors directly.
+        let checks = due.is_none_or(|c| n + 1 >= c);
+        let want_probes = vcd.is_some() || cosim || checks || n + 1 == next_sample || n + 1 == sc.duration;
         if let Some(m) = sim.model.as_mut() {
             mo = m.tick(&inp);
-            mp = m.probes();
-            decoder.observe(m, &mo, n + 1, &mut |e| match e {
-                PinEvent::Chain { .. } => datagrams += 1,
-                PinEvent::Step { motor, .. } => step_pulses[motor as usize] += 1,
-                PinEvent::Int { .. } => {}
-            });
+            if want_probes {
+                mp = m.probes();
+            }
+            motor_stats(m, &mut stats);
+            decoder.observe(m, &mo, n + 1, &mut |e| count(e, &mut datagrams, &mut step_pulses));
         }
         if let Some(r) = sim.rtl.as_mut() {
             let ro = r.tick(&inp);
@@ -516,16 +531,18 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
                 mismatch = Some(mismatch_report(chip, m));
             }
         }
-        for (m, st) in stats.iter_mut().enumerate() {
-            let p = &mp.motor[m];
-            st.steps += p.step as u64;
-            st.peak_v = st.peak_v.max(p.v_internal.abs());
-            st.peak_a = st.peak_a.max(p.a_actual.abs());
+        if sim.model.is_none() {
+            for (m, st) in stats.iter_mut().enumerate() {
+                let p = &mp.motor[m];
+                st.steps += p.step as u64;
+                st.peak_v = st.peak_v.max(p.v_internal.abs());
+                st.peak_a = st.peak_a.max(p.a_actual.abs());
+            }
         }
         if let Some(w) = vcd.as_mut() {
             let txt = ended.map(|(c, _)| c.short(chip));
             let b = ro_rp.as_ref().filter(|_| cosim).map(|(o, p)| (o, p));
-            w.tick(n, &inp, &mo, &mp, b, bad, txt.as_deref()).map_err(|e| format!("writing VCD: {e}"))?;
+            w.tick(n, &inp, &mo, &mp, b, bad, txt.as_deref()).map_err(|e| format!("{}: cannot write: {e}", w.path().display()))?;
         }
         if let Some((c, Some(i))) = ended {
             if let Check::Register { reg, field, expected, .. } = &sc.expects[i].check {
@@ -544,7 +561,10 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
                 });
             }
         }
-        after_edge(cycles, &mp, &mo, &mut queue, &mut drv, &mut shadow, &mut results);
+        if checks {
+            after_edge(cycles, &mp, &mo, &mut queue, &mut drv, &mut shadow, &mut fired, &mut results);
+            due = next_check(sc, &fired, &results, cycles);
+        }
         if cycles == next_sample || cycles == sc.duration {
             next_sample += every;
             samples.push(sample(sc, &shadow, &mp, cycles));
@@ -555,9 +575,8 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
     }
     progress(cycles, sc.duration);
 
-    if let (Some(w), Some(tmp), Some(dst)) = (vcd.take(), &tmp_vcd, &opt.vcd) {
-        w.finish().map_err(|e| format!("writing VCD: {e}"))?;
-        std::fs::rename(tmp, dst).map_err(|e| format!("{}: cannot write: {e}", dst.display()))?;
+    if let Some(w) = vcd.take() {
+        w.finish()?;
     }
     for (m, st) in stats.iter_mut().enumerate() {
         let (pd, rd, us) = shadow.clk_config(m);
@@ -601,6 +620,88 @@ pub fn run(sc: &Scenario, opt: &Options, progress: &mut dyn FnMut(u64, u64)) -> 
     })
 }
 
+/// A stretch of edges in which nothing but the model acts: the µC driver idle with nothing
+/// queued, no VCD, pins or RTL, and no event, check or sample due before edge `limit`. The
+/// inputs stay `inputs`; each edge only ticks the model and counts what the run reports.
+struct Idle {
+    inputs: tmc429_model::Inputs,
+    limit: u64,
+    /// The run's length, for the progress report.
+    duration: u64,
+}
+
+impl Idle {
+    /// Runs the edges after `cycles` up to, not including, edge `limit` (which the caller's
+    /// full edge handles); the outputs of the last edge run, if any.
+    #[allow(clippy::too_many_arguments)]
+    fn edges(
+        &self,
+        m: &mut Tmc429,
+        cycles: &mut u64,
+        stats: &mut [MotorStats],
+        decoder: &mut EventDecoder,
+        datagrams: &mut u64,
+        step_pulses: &mut [u64; 3],
+        progress: &mut dyn FnMut(u64, u64),
+    ) -> Option<Outputs> {
+        let mut out = None;
+        while *cycles + 1 < self.limit {
+            let o = m.tick(&self.inputs);
+            motor_stats(m, stats);
+            *cycles += 1;
+            decoder.observe(m, &o, *cycles, &mut |e| count(e, datagrams, step_pulses));
+            out = Some(o);
+            if *cycles & 0xFFFF == 0 {
+                progress(*cycles, self.duration);
+            }
+        }
+        out
+    }
+}
+
+/// The run's statistics of the motors after an edge of the model (steps, peak |V|, peak |a|).
+#[inline]
+fn motor_stats(m: &Tmc429, stats: &mut [MotorStats]) {
+    for (k, st) in stats.iter_mut().enumerate() {
+        let mm = m.motor(k);
+        st.steps += mm.step as u64;
+        st.peak_v = st.peak_v.max(mm.v.abs());
+        st.peak_a = st.peak_a.max(mm.a_actual.abs());
+    }
+}
+
+/// Counts a decoded pin event: driver-chain datagrams and Step/Dir pulses.
+#[inline]
+fn count(e: PinEvent, datagrams: &mut u64, step_pulses: &mut [u64; 3]) {
+    match e {
+        PinEvent::Chain { .. } => *datagrams += 1,
+        PinEvent::Step { motor, .. } => step_pulses[motor as usize] += 1,
+        PinEvent::Int { .. } => {}
+    }
+}
+
+/// The first edge after `cycle` after which the scenario's events and expectations have work:
+/// `None` (every edge) while a `when` trigger or a `reached` check waits, else the first pending
+/// cycle trigger or `at` of a check after `cycle` (`u64::MAX` if there is none).
+fn next_check(sc: &Scenario, fired: &[bool], results: &[Option<ExpectResult>], cycle: u64) -> Option<u64> {
+    let mut next = u64::MAX;
+    for (ev, _) in sc.events.iter().zip(fired).filter(|(_, f)| !**f) {
+        match ev.trigger {
+            Trigger::When(_) => return None,
+            Trigger::Cycle(c) if c > cycle => next = next.min(c),
+            Trigger::Cycle(_) => {}
+        }
+    }
+    for (e, _) in sc.expects.iter().zip(results).filter(|(_, r)| r.is_none()) {
+        match e.check {
+            Check::Reached { .. } => return None,
+            Check::Probes { at, .. } | Check::Register { at, .. } if at > cycle => next = next.min(at),
+            _ => {}
+        }
+    }
+    Some(next)
+}
+
 fn sample(sc: &Scenario, shadow: &Shadow, p: &Probes, cycle: u64) -> Sample {
     let mut s = Sample { seconds: sc.seconds(cycle), x: [0; 3], v_hz: [0.0; 3], a_hz_per_s: [0.0; 3] };
     for m in 0..3 {
@@ -625,12 +726,4 @@ fn mismatch_report(chip: Chip, m: Mismatch) -> String {
         vcd_files: Vec::new(),
     };
     out.report(&m).replace(", seed 0)", ")")
-}
-
-/// `dir/.stem.tmp-PID.ext` beside the destination (same extension, which some writers go
-/// by): renamed over it when complete.
-pub fn tmp_path(p: &Path) -> PathBuf {
-    let stem = p.file_stem().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let ext = p.extension().map(|e| format!(".{}", e.to_string_lossy())).unwrap_or_default();
-    p.with_file_name(format!(".{stem}.tmp-{}{ext}", std::process::id()))
 }

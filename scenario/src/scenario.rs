@@ -11,6 +11,7 @@ use toml::de::{DeTable, DeValue};
 use toml::Spanned;
 
 use tmc429_model::regmap::{self, Access, Field, Register, Space};
+use tmc429_model::text::shown;
 use tmc429_model::Chip;
 use tmc429_testbench::signals::{self, SIGNALS};
 
@@ -296,20 +297,52 @@ pub fn parse_time(s: &str, fclk: u64) -> Result<u64, String> {
     let split = t.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_' || c == 'e' || c == '-' || c == '+')).unwrap_or(t.len());
     let (num, unit) = t.split_at(split);
     let num: String = num.chars().filter(|&c| c != '_').collect();
-    let x: f64 =
-        num.parse().map_err(|_| format!("expected a time such as \"10 ms\", \"2.5 s\", \"500 us\" or \"1000 cycles\", found \"{s}\""))?;
+    let x: f64 = num
+        .parse()
+        .map_err(|_| format!("expected a time such as \"10 ms\", \"2.5 s\", \"500 us\" or \"1000 cycles\", found \"{}\"", shown(s)))?;
     if !(x >= 0.0 && x.is_finite()) {
-        return Err(format!("expected a time ≥ 0, found \"{s}\""));
+        return Err(format!("expected a time ≥ 0, found \"{}\"", shown(s)));
     }
     let scale = match unit.trim() {
-        "cycles" | "cycle" | "clk" => return Ok(x.round() as u64),
-        "s" => 1.0,
-        "ms" => 1e-3,
-        "us" | "µs" => 1e-6,
-        "ns" => 1e-9,
-        u => return Err(format!("unknown time unit \"{u}\" in \"{s}\": expected s, ms, us, ns or cycles")),
+        "cycles" | "cycle" | "clk" => None,
+        "s" => Some(1.0),
+        "ms" => Some(1e-3),
+        "us" | "µs" => Some(1e-6),
+        "ns" => Some(1e-9),
+        u => return Err(format!("unknown time unit \"{}\" in \"{}\": expected s, ms, us, ns or cycles", shown(u), shown(s))),
     };
-    Ok((x * scale * fclk as f64).round() as u64)
+    let cycles = match scale {
+        Some(scale) => (x * scale * fclk as f64).round(),
+        None => x.round(),
+    };
+    // 2^64 and above would be cut to u64::MAX by the conversion: a time that long is rejected
+    if cycles >= u64::MAX as f64 {
+        return Err(format!("time \"{}\" is {cycles:e} CLK cycles, more than a 64-bit cycle count holds", shown(s)));
+    }
+    Ok(cycles as u64)
+}
+
+/// Byte offset of the line that opens the most levels (dots of dotted keys, `[`, `{`), outside
+/// strings and comments: where a nesting error without a place of its own is reported.
+fn deepest_line(text: &str) -> usize {
+    let (mut best, mut best_at, mut at) = (0, 0, 0);
+    for line in text.split_inclusive('\n') {
+        let (mut n, mut quote) = (0, None);
+        for c in line.chars() {
+            match (quote, c) {
+                (None, '"' | '\'') => quote = Some(c),
+                (Some(q), c) if c == q => quote = None,
+                (None, '#') => break,
+                (None, '.' | '[' | '{') => n += 1,
+                _ => {}
+            }
+        }
+        if n > best {
+            (best, best_at) = (n, at);
+        }
+        at += line.len();
+    }
+    best_at
 }
 
 /// A frequency: integer Hz or a string with Hz, kHz, MHz.
@@ -322,15 +355,16 @@ fn parse_freq(s: &str) -> Result<u64, String> {
     } else {
         (t.strip_suffix("Hz").unwrap_or(t), 1.0)
     };
-    let v: f64 = n.trim().parse().map_err(|_| format!("expected a frequency such as 32000000 or \"32 MHz\", found \"{s}\""))?;
+    let v: f64 = n.trim().parse().map_err(|_| format!("expected a frequency such as 32000000 or \"32 MHz\", found \"{}\"", shown(s)))?;
     let hz = (v * mult).round();
     if !(1e3..=1e9).contains(&hz) {
-        return Err(format!("frequency \"{s}\" out of range 1 kHz .. 1 GHz"));
+        return Err(format!("frequency \"{}\" out of range 1 kHz .. 1 GHz", shown(s)));
     }
     Ok(hz as u64)
 }
 
-fn field_range(f: &Field) -> (i64, i64) {
+/// The values a field takes in a write: signed fields as signed numbers.
+pub fn field_range(f: &Field) -> (i64, i64) {
     if f.signed {
         (-(1i64 << (f.width - 1)), (1i64 << (f.width - 1)) - 1)
     } else {
@@ -340,7 +374,7 @@ fn field_range(f: &Field) -> (i64, i64) {
 
 /// Whether the µC may write the register at all (R-only registers without a write effect
 /// may not).
-fn writable(r: &Register) -> bool {
+pub fn writable(r: &Register) -> bool {
     r.fields.iter().any(|f| f.access != Access::R) || r.effect.contains("write")
 }
 
@@ -358,6 +392,7 @@ impl Ctx<'_> {
     /// Resolves a register or field name for a motor (`motor` given) or a global register.
     fn name(&mut self, key: &Spanned<std::borrow::Cow<str>>, motor: Option<u8>) -> Option<Named> {
         let k = key.get_ref().as_ref();
+        let ks = shown(k);
         let space = if motor.is_some() { Space::Motor } else { Space::Global };
         if let Some(r) = registers_of(self.chip, space).find(|r| r.name.eq_ignore_ascii_case(k)) {
             return Some(Named::Reg(r));
@@ -371,15 +406,15 @@ impl Ctx<'_> {
         let other = if motor.is_some() { Space::Global } else { Space::Motor };
         let in_other = registers_of(self.chip, other).any(|r| r.name.eq_ignore_ascii_case(k) || r.field(k).is_some());
         let msg = if in_other && motor.is_some() {
-            format!("'{k}' is a global register or field: remove `motor`")
+            format!("'{ks}' is a global register or field: remove `motor`")
         } else if in_other {
-            format!("'{k}' is a motor register or field: add `motor = 0..2`")
+            format!("'{ks}' is a motor register or field: add `motor = 0..2`")
         } else if regmap::REGISTERS.iter().any(|r| r.name.eq_ignore_ascii_case(k) || r.field(k).is_some()) {
-            format!("'{k}' does not exist on the {}", self.chip)
+            format!("'{ks}' does not exist on the {}", self.chip)
         } else {
             let names: Vec<&str> = registers_of(self.chip, space).map(|r| r.name).collect();
             format!(
-                "unknown {} register or field '{k}': expected one of {} or one of their fields (tmc429 regmap)",
+                "unknown {} register or field '{ks}': expected one of {} or one of their fields (tmc429 regmap)",
                 if motor.is_some() { "motor" } else { "global" },
                 names.join(", ")
             )
@@ -438,7 +473,12 @@ impl Ctx<'_> {
                                         let names: Vec<&str> = reg.fields.iter().map(|f| f.name).collect();
                                         self.err(
                                             fk.span().start,
-                                            format!("{} has no field '{}': expected one of {}", reg.name, fk.get_ref(), names.join(", ")),
+                                            format!(
+                                                "{} has no field '{}': expected one of {}",
+                                                reg.name,
+                                                shown(fk.get_ref()),
+                                                names.join(", ")
+                                            ),
                                         );
                                     }
                                 }
@@ -450,9 +490,10 @@ impl Ctx<'_> {
                             self.err(
                                 v.span().start,
                                 format!(
-                                    "{}: expected an integer or a table of fields{}, found \"{s}\"",
+                                    "{}: expected an integer or a table of fields{}, found \"{}\"",
                                     reg.name,
-                                    if reg.name == "pmul_pdiv" { " or \"auto\"" } else { "" }
+                                    if reg.name == "pmul_pdiv" { " or \"auto\"" } else { "" },
+                                    shown(s)
                                 ),
                             );
                             continue;
@@ -503,7 +544,7 @@ impl Ctx<'_> {
                         out.push((i, b));
                     }
                 }
-                None => self.err(k.span().start, format!("unknown pin '{}': expected one of {}", k.get_ref(), PINS.join(", "))),
+                None => self.err(k.span().start, format!("unknown pin '{}': expected one of {}", shown(k.get_ref()), PINS.join(", "))),
             }
         }
         out
@@ -524,7 +565,7 @@ impl Ctx<'_> {
         let name = k.get_ref().as_ref();
         let need_motor = |c: &mut Self| -> Option<u8> {
             if motor.is_none() {
-                c.err(k.span().start, format!("{what}: '{name}' needs `motor = 0..2`"));
+                c.err(k.span().start, format!("{what}: '{}' needs `motor = 0..2`", shown(name)));
             }
             motor
         };
@@ -559,7 +600,7 @@ impl Ctx<'_> {
             _ => {
                 self.err(
                     k.span().start,
-                    format!("{what}: unknown condition '{name}': expected x_actual, v_actual, at_target, stopped or int"),
+                    format!("{what}: unknown condition '{}': expected x_actual, v_actual, at_target, stopped or int", shown(name)),
                 );
                 None
             }
@@ -569,7 +610,7 @@ impl Ctx<'_> {
     fn check_keys(&mut self, t: &DeTable, allowed: &[&str], what: &str) {
         for (k, _) in t.iter() {
             if !allowed.contains(&k.get_ref().as_ref()) {
-                self.err(k.span().start, format!("{what}: unknown key '{}': expected {}", k.get_ref(), allowed.join(", ")));
+                self.err(k.span().start, format!("{what}: unknown key '{}': expected {}", shown(k.get_ref()), allowed.join(", ")));
             }
         }
     }
@@ -595,7 +636,12 @@ impl Ctx<'_> {
                     .collect();
                 self.err(
                     k.span().start,
-                    format!("unknown {}probe '{name}': expected one of {}", if motor.is_some() { "motor " } else { "" }, list.join(", ")),
+                    format!(
+                        "unknown {}probe '{}': expected one of {}",
+                        if motor.is_some() { "motor " } else { "" },
+                        shown(name),
+                        list.join(", ")
+                    ),
                 );
                 continue;
             };
@@ -620,7 +666,13 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
         Ok(d) => d,
         Err(e) => {
             let mut c = Ctx { file, text, errors: Vec::new(), chip: Chip::Tmc429, fclk: 32_000_000 };
-            c.err(e.span().map(|s| s.start).unwrap_or(0), format!("TOML: {}", e.message().trim()));
+            match e.span() {
+                Some(sp) => c.err(sp.start, format!("TOML: {}", e.message().trim())),
+                // the parser's recursion limit has no place: the line that nests deepest
+                None => {
+                    c.err(deepest_line(text), format!("TOML: {} (keys, arrays or inline tables nested too deeply)", e.message().trim()))
+                }
+            }
             return Err(c.errors);
         }
     };
@@ -682,7 +734,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
         if let Some(s) = c.string(v, "driver") {
             match DRIVERS.iter().find(|d| **d == s) {
                 Some(d) => driver = d,
-                None => c.err(v.span().start, format!("unknown driver '{s}': expected one of {}", DRIVERS.join(", "))),
+                None => c.err(v.span().start, format!("unknown driver '{}': expected one of {}", shown(s), DRIVERS.join(", "))),
             }
             match (driver, c.chip) {
                 ("table-11-2", Chip::Tmc4210) => {
@@ -699,7 +751,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
             match s {
                 "sine" => lut = true,
                 "none" => {}
-                _ => c.err(v.span().start, format!("unknown lut '{s}': expected sine or none")),
+                _ => c.err(v.span().start, format!("unknown lut '{}': expected sine or none", shown(s))),
             }
             if lut && c.chip == Chip::Tmc4210 {
                 c.err(v.span().start, "lut: the TMC4210 has no microstep table");

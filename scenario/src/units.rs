@@ -1,5 +1,5 @@
 //! Physical units of the motion registers and the unit calculator behind `tmc429 calc`
-//! (TMC429 §8.1.13, TMC428 §8.14, spec-digest §4.3, §5.5, §5.6).
+//! (TMC429 §8.1.13, §8.1.10.2.3, §8.1.7.1.1, TMC428 §8.14).
 //!
 //! - step rate `R[Hz] = fCLK · velocity / (2^pulse_div · 2048 · 32)` (TMC429 §8.1.13.1);
 //! - its change `ΔR[Hz/s] = fCLK² · a_max / 2^(pulse_div + ramp_div + 29)`;
@@ -35,7 +35,7 @@ pub fn ramp_steps(v: f64, a_max: f64, pulse_div: u32, ramp_div: u32) -> f64 {
 }
 
 /// A_MAX_LOWER_LIMIT = 2^(ramp_div − pulse_div − 1); 1 when the exponent is ≤ 0; half of it
-/// with v_max ≤ 1448 (TMC429 §8.1.7.1.1, spec-digest §5.6).
+/// with v_max ≤ 1448 (TMC429 §8.1.7.1.1).
 pub fn a_max_lower_limit(ramp_div: u32, pulse_div: u32, v_max: u32) -> u32 {
     let e = ramp_div as i32 - pulse_div as i32 - 1;
     if e <= 0 {
@@ -243,7 +243,7 @@ mod tests {
         (x * 100.0).round() / 100.0
     }
 
-    /// spec-digest §5.6: R, ΔR and S at 16 MHz.
+    /// TMC429 §8.1.13.1–§8.1.13.2: R, ΔR and S at 16 MHz.
     #[test]
     fn formula_vectors() {
         let f = 16e6;
@@ -255,7 +255,7 @@ mod tests {
         assert_eq!(ramp_steps(1000.0, 100.0, 7, 7), 625.0);
     }
 
-    /// spec-digest §5.6: a_max limits.
+    /// TMC429 §8.1.7.1.1: a_max limits.
     #[test]
     fn a_max_limits() {
         assert_eq!(a_max_lower_limit(5, 0, 2047), 16);

@@ -1,5 +1,5 @@
 //! VCD of a scenario run: the input pins and the engine's output pins and probes under the
-//! scope names of ARCHITECTURE.md (`top`, `motor0..2`, `chain`), the µC's SPI frames decoded as
+//! scope names of the co-simulation (`top`, `motor0..2`, `chain`; docs/cosim.md), the µC's SPI frames decoded as
 //! strings (`spi.transaction`), and with `--engine cosim` the RTL's side (`rtl.…`) and
 //! `cosim.mismatch`. Time unit 1 ps, one CLK period per edge (from fclk); the inputs of edge n
 //! change at (n − ½)·T, the outputs after it at n·T, as in `tmc429 cosim`'s VCD.
@@ -15,6 +15,7 @@ use vcd::{IdCode, TimescaleUnit, VarType, Writer};
 
 use tmc429_model::{Inputs, Outputs, Probes};
 use tmc429_testbench::signals::{flatten, N_SIGNALS, SIGNALS};
+use tmc429_testbench::vectors::files::Staged;
 
 pub use tmc429_testbench::trace::INPUT_NAMES;
 use tmc429_testbench::trace::{add_signals, input_bits, put, put_text};
@@ -38,8 +39,11 @@ pub fn variable_names(cosim: bool) -> Vec<String> {
     v
 }
 
+/// A VCD being written under a temporary name ([`Staged`]): [`VcdWriter::finish`] renames it to
+/// its target; dropped unfinished (an error during the run), it leaves no file.
 pub struct VcdWriter {
     w: Writer<BufWriter<File>>,
+    staged: Staged,
     period: u64,
     inputs: [IdCode; 10],
     a: [Option<IdCode>; N_SIGNALS],
@@ -53,9 +57,11 @@ pub struct VcdWriter {
 }
 
 impl VcdWriter {
-    /// Creates the file and writes the header; `cosim` adds the RTL side and the mismatch flag.
+    /// Creates the file (under its temporary name) and writes the header; `cosim` adds the RTL
+    /// side and the mismatch flag.
     pub fn create(path: &Path, fclk_hz: u64, title: &str, cosim: bool) -> io::Result<VcdWriter> {
-        let f = File::create(path)?;
+        let staged = Staged::new(path);
+        let f = File::create(staged.tmp())?;
         let mut w = Writer::new(BufWriter::with_capacity(1 << 20, f));
         w.comment(title)?;
         w.timescale(1, TimescaleUnit::PS)?;
@@ -83,6 +89,7 @@ impl VcdWriter {
         w.enddefinitions()?;
         Ok(VcdWriter {
             w,
+            staged,
             period: tmc429_testbench::rtl::period_ps(fclk_hz),
             inputs,
             a,
@@ -163,7 +170,14 @@ impl VcdWriter {
         Ok(())
     }
 
-    pub fn finish(mut self) -> io::Result<()> {
-        self.w.writer().flush()
+    /// The target's name.
+    pub fn path(&self) -> &Path {
+        self.staged.path()
+    }
+
+    /// Flushes the file and renames it to its target (errors name the file).
+    pub fn finish(mut self) -> Result<(), String> {
+        self.w.writer().flush().map_err(|e| format!("{}: cannot write: {e}", self.path().display()))?;
+        self.staged.commit().map(drop)
     }
 }

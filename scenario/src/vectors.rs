@@ -20,6 +20,7 @@ pub fn vector_scenario(sc: &Scenario, pins: PinRuns) -> vectors::Scenario {
     vectors::Scenario {
         name: file_name(&sc.name),
         chip: sc.chip,
+        package: tmc429_model::Package::full(sc.chip),
         fclk: sc.fclk,
         seed: 0,
         source: Source::Recorded(pins),
@@ -49,7 +50,7 @@ pub fn files(sc: &Scenario, dir: &Path) -> Vec<PathBuf> {
         for f in forms {
             match f {
                 Form::Pins => out.extend(["hex", "cols", "meta"].map(|e| stem.with_extension(e))),
-                Form::Csv => out.push(stem.with_extension("csv")),
+                f => out.push(stem.with_extension(f.extension())),
             }
         }
     }
