@@ -5,6 +5,7 @@ use crate::proto::{op, Instruction};
 use std::collections::HashMap;
 use std::fmt;
 use std::path::{Path, PathBuf};
+use tmc429_model::text::shown;
 
 /// An assembly error with its place.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -24,7 +25,7 @@ impl std::error::Error for AsmError {}
 
 /// What an operand slot holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Slot {
+pub(crate) enum Slot {
     /// Type field, with an optional keyword table.
     Type(&'static [(&'static str, u8)]),
     /// Motor/bank field.
@@ -48,11 +49,13 @@ const NUM: &[(&str, u8)] = &[];
 
 use Slot::*;
 
+pub use crate::disasm::{disassemble, format_ins};
+
 /// Mnemonic, opcode, operand slots, number of trailing optional slots.
-struct Spec {
-    name: &'static str,
+pub(crate) struct Spec {
+    pub(crate) name: &'static str,
     op: u8,
-    slots: &'static [Slot],
+    pub(crate) slots: &'static [Slot],
     optional: usize,
 }
 
@@ -105,7 +108,7 @@ const SPECS: &[Spec] = &[
 fn spec_by_name(n: &str) -> Option<&'static Spec> {
     SPECS.iter().find(|s| s.name.eq_ignore_ascii_case(n))
 }
-fn spec_by_op(o: u8) -> Option<&'static Spec> {
+pub(crate) fn spec_by_op(o: u8) -> Option<&'static Spec> {
     SPECS.iter().find(|s| s.op == o)
 }
 
@@ -117,82 +120,6 @@ pub fn is_program_opcode(o: u8) -> bool {
 /// Mnemonic of an opcode, if it has one.
 pub fn mnemonic(o: u8) -> Option<&'static str> {
     spec_by_op(o).map(|s| s.name)
-}
-
-/// Symbols of the include files the TMCL-IDE ships, as far as this module uses them.
-fn builtin_include(name: &str) -> Option<&'static [(&'static str, i64)]> {
-    const PARAM: &[(&str, i64)] = &[
-        ("APTargetPosition", 0),
-        ("APActualPosition", 1),
-        ("APTargetSpeed", 2),
-        ("APActualSpeed", 3),
-        ("APMaxPositioningSpeed", 4),
-        ("APMaxAcceleration", 5),
-        ("APAbsMaxCurrent", 6),
-        ("APStandbyCurrent", 7),
-        ("APTargetPosReached", 8),
-        ("APRefSwitchStatus", 9),
-        ("APRightLimitSwitchStatus", 10),
-        ("APLeftLimitSwitchStatus", 11),
-        ("APRightLimitSwitchDisable", 12),
-        ("APLeftLimitSwitchDisable", 13),
-        ("APMinimumSpeed", 130),
-        ("APActualAcceleration", 135),
-        ("APRampMode", 138),
-        ("APMicrostepResolution", 140),
-        ("APRefSwitchTolerance", 141),
-        ("APSoftStopFlag", 149),
-        ("APRampDivisor", 153),
-        ("APPulseDivisor", 154),
-        ("APReferencingMode", 193),
-        ("APReferencingSearchSpeed", 194),
-        ("APReferencingSwitchSpeed", 195),
-        ("APDistanceEndSwitches", 196),
-        ("APBoostCurrent", 200),
-        ("APFreewheelingDelay", 204),
-        ("APPowerDownDelay", 214),
-        ("GPSerialAddress", 66),
-        ("GPASCIIMode", 67),
-        ("GPSerialHeartbeat", 68),
-        ("GPSerialHostAddress", 76),
-        ("GPAutoStartMode", 77),
-        ("GPEndSwitchPolarity", 79),
-        ("GPTickTimer", 132),
-        ("GPRandomNumber", 133),
-        ("Motor0", 0),
-        ("Motor1", 1),
-        ("Motor2", 2),
-    ];
-    const IRQ: &[(&str, i64)] = &[
-        ("TI_TIMER0", 0),
-        ("TI_TIMER1", 1),
-        ("TI_TIMER2", 2),
-        ("TI_TARGET0", 3),
-        ("TI_TARGET1", 4),
-        ("TI_TARGET2", 5),
-        ("TI_STOPL0", 27),
-        ("TI_STOPR0", 28),
-        ("TI_STOPL1", 29),
-        ("TI_STOPR1", 30),
-        ("TI_STOPL2", 31),
-        ("TI_STOPR2", 32),
-        ("TI_PIN0", 39),
-        ("TI_PIN1", 40),
-        ("TI_PIN2", 41),
-        ("TI_PIN3", 42),
-        ("TI_PIN4", 43),
-        ("TI_PIN5", 44),
-        ("TI_PIN6", 45),
-        ("TI_PIN7", 46),
-        ("TI_GLOBAL", 255),
-    ];
-    if name.eq_ignore_ascii_case("TMCLParam.tmc") {
-        Some(PARAM)
-    } else if name.eq_ignore_ascii_case("Interrupts.inc") {
-        Some(IRQ)
-    } else {
-        None
-    }
 }
 
 /// One source line after comments are removed.
@@ -244,11 +171,17 @@ fn is_ident(c: char) -> bool {
     c.is_ascii_alphanumeric() || c == '_'
 }
 
+/// Deepest nesting of parentheses and unary operators an expression may have: the evaluator
+/// recurses once per level, and a limit keeps a hostile source from exhausting the stack.
+pub const MAX_EXPR_DEPTH: usize = 64;
+
 /// Expression evaluator: integers (decimal, $hex, 0x hex, %binary), symbols, + - * / % & | ^ ~ ( ).
 struct Expr<'a> {
     s: &'a [u8],
     i: usize,
     syms: &'a HashMap<String, i64>,
+    /// Parentheses and unary operators open around the current position.
+    depth: usize,
 }
 
 impl<'a> Expr<'a> {
@@ -258,11 +191,11 @@ impl<'a> Expr<'a> {
         }
     }
     fn parse(s: &str, syms: &HashMap<String, i64>) -> Result<i64, String> {
-        let mut e = Expr { s: s.as_bytes(), i: 0, syms };
+        let mut e = Expr { s: s.as_bytes(), i: 0, syms, depth: 0 };
         let v = e.or()?;
         e.ws();
         if e.i != e.s.len() {
-            return Err(format!("unexpected '{}' in expression '{}'", &s[e.i..], s.trim()));
+            return Err(format!("unexpected '{}' in expression '{}'", shown(&s[e.i..]), shown(s.trim())));
         }
         Ok(v)
     }
@@ -336,21 +269,29 @@ impl<'a> Expr<'a> {
     }
     fn unary(&mut self) -> Result<i64, String> {
         self.ws();
-        match self.s.get(self.i) {
-            Some(b'-') => {
+        match self.s.get(self.i).copied() {
+            Some(op @ (b'-' | b'+' | b'~' | b'(')) => {
+                if self.depth == MAX_EXPR_DEPTH {
+                    return Err(format!("expression nested deeper than {MAX_EXPR_DEPTH} levels of parentheses and unary operators"));
+                }
                 self.i += 1;
-                Ok(self.unary()?.wrapping_neg())
+                self.depth += 1;
+                let v = self.operand_of(op);
+                self.depth -= 1;
+                v
             }
-            Some(b'+') => {
-                self.i += 1;
-                self.unary()
-            }
-            Some(b'~') => {
-                self.i += 1;
-                Ok(!self.unary()?)
-            }
-            Some(b'(') => {
-                self.i += 1;
+            Some(_) => self.atom(),
+            None => Err("missing value".into()),
+        }
+    }
+    /// The operand of a unary operator, or the expression inside `(` up to its `)`: one level
+    /// deeper.
+    fn operand_of(&mut self, op: u8) -> Result<i64, String> {
+        match op {
+            b'-' => Ok(self.unary()?.wrapping_neg()),
+            b'+' => self.unary(),
+            b'~' => Ok(!self.unary()?),
+            _ => {
                 let v = self.or()?;
                 self.ws();
                 if self.s.get(self.i) != Some(&b')') {
@@ -359,8 +300,6 @@ impl<'a> Expr<'a> {
                 self.i += 1;
                 Ok(v)
             }
-            Some(_) => self.atom(),
-            None => Err("missing value".into()),
         }
     }
     fn atom(&mut self) -> Result<i64, String> {
@@ -383,16 +322,17 @@ impl<'a> Expr<'a> {
                 self.i += 1;
             }
             let digits = text(ds, self.i, self.s);
-            return i64::from_str_radix(&digits, radix).map_err(|_| format!("'{}' is not a number", text(start, self.i, self.s)));
+            return i64::from_str_radix(&digits, radix).map_err(|_| format!("'{}' is not a number", shown(&text(start, self.i, self.s))));
         }
         if is_ident_start(c) {
             while self.i < self.s.len() && is_ident(self.s[self.i] as char) {
                 self.i += 1;
             }
             let name = text(start, self.i, self.s);
-            return self.syms.get(&name).copied().ok_or_else(|| format!("unknown symbol '{name}'"));
+            return self.syms.get(&name).copied().ok_or_else(|| format!("unknown symbol '{}'", shown(&name)));
         }
-        Err(format!("unexpected '{c}' where a value was expected"))
+        let rest = String::from_utf8_lossy(&self.s[self.i..]);
+        Err(format!("unexpected '{}' where a value was expected", shown(&rest.chars().take(1).collect::<String>())))
     }
 }
 
@@ -411,7 +351,7 @@ fn parse_ins(text: &str, syms: &HashMap<String, i64>) -> Result<Instruction, Str
         Some(p) => (&t[..p], &t[p..]),
         None => (t, ""),
     };
-    let spec = spec_by_name(mn).ok_or_else(|| format!("unknown command '{mn}'"))?;
+    let spec = spec_by_name(mn).ok_or_else(|| format!("unknown command '{}'", shown(mn)))?;
     // "EI, 255" (as the manual prints it) is accepted: a comma right after the mnemonic.
     let rest = rest.trim_start();
     let rest = rest.strip_prefix(',').unwrap_or(rest);
@@ -472,8 +412,10 @@ pub trait Source {
 /// Reads from the file system.
 pub struct FileSystem;
 impl Source for FileSystem {
+    /// A file that is not UTF-8 is `InvalidData` with the line and byte offset of the first bad
+    /// byte ([`tmc429_model::text::utf8`]).
     fn read(&self, path: &Path) -> std::io::Result<String> {
-        std::fs::read_to_string(path)
+        tmc429_model::text::utf8(std::fs::read(path)?).map_err(|e| std::io::Error::new(std::io::ErrorKind::InvalidData, e))
     }
 }
 
@@ -482,6 +424,8 @@ impl Source for FileSystem {
 pub struct Program {
     pub code: Vec<Instruction>,
     pub labels: Vec<(String, usize)>,
+    /// File and line of each instruction of `code`.
+    pub lines: Vec<(String, usize)>,
 }
 
 fn gather(
@@ -501,7 +445,7 @@ fn gather(
             if name.is_empty() {
                 return Err(e("#include needs a file name".into()));
             }
-            if let Some(b) = builtin_include(name) {
+            if let Some(b) = crate::asm_symbols::builtin_include(name) {
                 for (k, v) in b {
                     syms.insert((*k).to_string(), *v);
                 }
@@ -511,7 +455,11 @@ fn gather(
                 return Err(e("includes nested deeper than 8 levels".into()));
             }
             let p: PathBuf = file.parent().unwrap_or(Path::new(".")).join(name);
-            let inner = src.read(&p).map_err(|er| e(format!("cannot read include file {}: {er}", p.display())))?;
+            let shown_p = shown(&p.display().to_string());
+            let inner = src.read(&p).map_err(|er| match er.kind() {
+                std::io::ErrorKind::InvalidData => e(format!("include file {shown_p}:{er}")),
+                _ => e(format!("cannot read include file {shown_p}: {er}")),
+            })?;
             gather(&p, &inner, src, lines, depth + 1, syms)?;
             continue;
         }
@@ -551,8 +499,8 @@ pub fn assemble(file: &Path, text: &str, src: &dyn Source) -> Result<Program, As
         let e = |msg: String| AsmError { file: l.file.clone(), line: l.no, msg };
         let (lab, rest) = split_label(&l.text);
         if let Some(n) = lab {
-            if label_names.contains_key(n) || syms.contains_key(n) && !label_names.contains_key(n) && false {
-                return Err(e(format!("label '{n}' defined twice")));
+            if label_names.contains_key(n) {
+                return Err(e(format!("label '{}' defined twice", shown(n))));
             }
             label_names.insert(n.to_string(), addr);
             labels.push((n.to_string(), addr));
@@ -565,7 +513,7 @@ pub fn assemble(file: &Path, text: &str, src: &dyn Source) -> Result<Program, As
             if lab.is_some() {
                 return Err(e("a constant definition cannot carry a label".into()));
             }
-            let v = Expr::parse(expr, &syms).map_err(|m| e(format!("constant '{name}': {m}")))?;
+            let v = Expr::parse(expr, &syms).map_err(|m| e(format!("constant '{}': {m}", shown(name))))?;
             syms.insert(name.to_string(), v);
             continue;
         }
@@ -576,6 +524,7 @@ pub fn assemble(file: &Path, text: &str, src: &dyn Source) -> Result<Program, As
     }
     // Pass 2: instructions.
     let mut code = Vec::new();
+    let mut places = Vec::new();
     for l in &lines {
         let (_, rest) = split_label(&l.text);
         let rest = rest.trim();
@@ -584,6 +533,7 @@ pub fn assemble(file: &Path, text: &str, src: &dyn Source) -> Result<Program, As
         }
         let ins = parse_ins(rest, &syms).map_err(|msg| AsmError { file: l.file.clone(), line: l.no, msg })?;
         code.push(ins);
+        places.push((l.file.clone(), l.no));
     }
     if code.len() > crate::config::PROGRAM_SIZE {
         return Err(AsmError {
@@ -592,57 +542,7 @@ pub fn assemble(file: &Path, text: &str, src: &dyn Source) -> Result<Program, As
             msg: format!("program has {} instructions, program memory holds {}", code.len(), crate::config::PROGRAM_SIZE),
         });
     }
-    Ok(Program { code, labels })
-}
-
-/// Formats one instruction in mnemonic form; `label` names program addresses.
-pub fn format_ins(i: &Instruction, label: &dyn Fn(i32) -> String) -> String {
-    let Some(spec) = spec_by_op(i.op) else {
-        return format!("// unknown command {} (type {}, motor {}, value {})", i.op, i.typ, i.motor, i.value);
-    };
-    let mut ops = Vec::new();
-    for s in spec.slots {
-        ops.push(match s {
-            Type(kw) => kw.iter().find(|(_, n)| *n == i.typ).map(|(n, _)| n.to_string()).unwrap_or_else(|| i.typ.to_string()),
-            Motor => i.motor.to_string(),
-            Value => i.value.to_string(),
-            Addr => label(i.value),
-        });
-    }
-    if ops.is_empty() {
-        spec.name.to_string()
-    } else {
-        format!("{} {}", spec.name, ops.join(", "))
-    }
-}
-
-/// Disassembles a program; jump targets get labels `L<address>`.
-pub fn disassemble(code: &[Instruction]) -> String {
-    let mut targets = std::collections::BTreeSet::new();
-    for i in code {
-        if let Some(s) = spec_by_op(i.op) {
-            if s.slots.contains(&Addr) {
-                targets.insert(i.value);
-            }
-        }
-    }
-    let label = |v: i32| {
-        if v >= 0 && (v as usize) < code.len() {
-            format!("L{v}")
-        } else {
-            v.to_string()
-        }
-    };
-    let mut out = String::new();
-    for (a, i) in code.iter().enumerate() {
-        if targets.contains(&(a as i32)) {
-            out.push_str(&format!("L{a}:\n"));
-        }
-        out.push_str("    ");
-        out.push_str(&format_ins(i, &label));
-        out.push('\n');
-    }
-    out
+    Ok(Program { code, labels, lines: places })
 }
 
 /// Opcode of a mnemonic.

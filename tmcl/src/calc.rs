@@ -1,5 +1,5 @@
 //! pmul/pdiv for the module's a_max and dividers, by the datasheet's method
-//! (`tmc429_model::pmulpdiv`, spec digest §5.5).
+//! (TMC429 §8.1.10.2.3 `pmulpdiv.c`, reproduced in `tmc429_model::pmulpdiv`).
 
 /// p reduction the module applies (the TMC429 datasheet recommends about 1 %).
 pub const P_REDUCTION: f32 = 0.01;

@@ -3,23 +3,25 @@
 //!
 //! Layout (all integers little-endian):
 //! ```text
-//! 0   8 bytes  "TMCLEEP1"
+//! 0   8 bytes  "TMCLEEP2"
 //! 8   u32      payload length N
 //! 12  N bytes  payload
 //! 12+N u32     CRC-32 (IEEE 802.3) of bytes 0 .. 12+N
-//! payload: u8 reserved(0) | 3 x 19 x i32 axis parameters (config::STORED_AXIS_PARAMS order)
-//!        | 12 x i32 bank-0 parameters (config::STORED_GLOBAL_PARAMS order)
+//! payload: u8 module type (ModuleType::code: 0 TMCM-3110, 1 TMCM-1311)
+//!        | 3 x A x i32 axis parameters | G x i32 bank-0 parameters (the module type's
+//!          parameters with access E, in table order: config::Settings::stored_params)
 //!        | 56 x i32 user variables | 3 x 21 x i32 coordinates
 //!        | u32 program length L (<= 2048) | L x 7 bytes instructions (7-byte form)
 //! ```
 //! A file that fails any check is rejected as a whole: nothing of it is applied.
 
 use crate::config::*;
+use crate::personality::ModuleType;
 use crate::proto::Instruction;
 use std::fmt;
 use std::path::Path;
 
-const MAGIC: &[u8; 8] = b"TMCLEEP1";
+const MAGIC: &[u8; 8] = b"TMCLEEP2";
 
 /// Everything the EEPROM holds.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -33,9 +35,16 @@ pub struct Image {
 
 impl Default for Image {
     fn default() -> Self {
+        Image::factory(ModuleType::Tmcm3110)
+    }
+}
+
+impl Image {
+    /// Factory defaults of a module type.
+    pub fn factory(kind: ModuleType) -> Self {
         Image {
-            axes: [AxisConfig::default(); AXES],
-            global: GlobalConfig::default(),
+            axes: [AxisConfig::axis(kind); AXES],
+            global: GlobalConfig::global(kind),
             user_vars: [0; STORED_USER_VARS],
             coords: [[0; COORDS]; AXES],
             program: Vec::new(),
@@ -75,14 +84,14 @@ pub fn crc32(data: &[u8]) -> u32 {
 
 impl Image {
     pub fn encode(&self) -> Vec<u8> {
-        let mut p = vec![0u8];
+        let mut p = vec![self.global.kind().code()];
         let put = |p: &mut Vec<u8>, v: i32| p.extend_from_slice(&v.to_le_bytes());
         for a in &self.axes {
-            for q in STORED_AXIS_PARAMS {
+            for q in a.stored_params() {
                 put(&mut p, a.get(q).unwrap_or(0));
             }
         }
-        for q in STORED_GLOBAL_PARAMS {
+        for q in self.global.stored_params() {
             put(&mut p, self.global.get(q).unwrap_or(0));
         }
         for v in self.user_vars {
@@ -111,7 +120,7 @@ impl Image {
             return bad(&format!("file has {} bytes, at least 16 expected", b.len()));
         }
         if &b[..8] != MAGIC {
-            return bad("missing the \"TMCLEEP1\" signature at offset 0");
+            return bad("missing the \"TMCLEEP2\" signature at offset 0");
         }
         let n = u32::from_le_bytes([b[8], b[9], b[10], b[11]]) as usize;
         if b.len() != 12 + n + 4 {
@@ -124,7 +133,13 @@ impl Image {
         }
         let p = &b[12..12 + n];
         let mut pos = 1usize;
-        let fixed = 1 + 4 * (AXES * STORED_AXIS_PARAMS.len() + STORED_GLOBAL_PARAMS.len() + STORED_USER_VARS + AXES * COORDS) + 4;
+        let code = p.first().copied().unwrap_or(0xff);
+        let Some(kind) = ModuleType::from_code(code) else {
+            return bad(&format!("unknown module type code {code} at offset 12"));
+        };
+        let mut img = Image::factory(kind);
+        let (na, ng) = (img.axes[0].stored_params().count(), img.global.stored_params().count());
+        let fixed = 1 + 4 * (AXES * na + ng + STORED_USER_VARS + AXES * COORDS) + 4;
         if p.len() < fixed {
             return bad(&format!("payload has {} bytes, at least {fixed} expected", p.len()));
         }
@@ -133,9 +148,8 @@ impl Image {
             *pos += 4;
             v
         };
-        let mut img = Image::default();
         for a in 0..AXES {
-            for q in STORED_AXIS_PARAMS {
+            for q in img.axes[a].stored_params() {
                 let v = get(&mut pos);
                 img.axes[a].set_raw(q, v);
             }
@@ -143,7 +157,7 @@ impl Image {
                 return bad(&format!("axis {a}: {e}"));
             }
         }
-        for q in STORED_GLOBAL_PARAMS {
+        for q in img.global.stored_params() {
             let v = get(&mut pos);
             img.global.set_raw(q, v);
         }
@@ -183,12 +197,25 @@ impl Image {
         }
     }
 
-    /// Writes the image atomically (temporary file, then rename).
+    /// Writes the image atomically: the bytes go to `PATH.tmp`, are flushed to the disk, and the
+    /// temporary file is renamed over `PATH`. A store that fails (a full disk, a read-only
+    /// directory) removes the temporary file and leaves `PATH` as it was: the file holds either
+    /// the old image or the new one, whole.
     pub fn save(&self, path: &Path) -> Result<(), EepromError> {
+        use std::io::Write;
         let mut tmp = path.as_os_str().to_owned();
         tmp.push(".tmp");
         let tmp = std::path::PathBuf::from(tmp);
-        std::fs::write(&tmp, self.encode()).map_err(EepromError::Io)?;
-        std::fs::rename(&tmp, path).map_err(EepromError::Io)
+        let written = std::fs::File::create(&tmp).and_then(|mut f| {
+            f.write_all(&self.encode())?;
+            f.sync_all()
+        });
+        match written.and_then(|_| std::fs::rename(&tmp, path)) {
+            Ok(()) => Ok(()),
+            Err(e) => {
+                let _ = std::fs::remove_file(&tmp);
+                Err(EepromError::Io(e))
+            }
+        }
     }
 }

@@ -1,5 +1,6 @@
-//! The module's I/O as a TMCM-3110 has them, and the virtual world around the axes
-//! (end and home switches along each axis). Both are set from the test side.
+//! The module's I/O (inputs, pull-ups, outputs, analog channels, supply) and the world around
+//! the axes (end and home switches along each axis). Both are set from the command line or,
+//! in tests, directly.
 
 use crate::config::AXES;
 
@@ -37,7 +38,7 @@ impl Io {
     pub fn inputs(&self) -> u8 {
         (0..8).fold(0u8, |m, n| m | ((self.input(n) as u8) << n))
     }
-    /// Analog reading of a digital input driven high: full scale; low or open without pull-up: 0.
+    /// Raw value of analog channel `ch` (AIN0: 0, AIN4: 4; 0..4095), 0 for other channels.
     pub fn analog(&self, ch: usize) -> u16 {
         match ch {
             0 => self.analog[0],
@@ -47,29 +48,48 @@ impl Io {
     }
 }
 
-/// Where the switches sit along each axis, and manual overrides.
+/// A stretch of an axis: positions `from..=to`.
+pub type Span = (i32, i32);
+
+/// Where the switches sit along each axis, and manual overrides. A switch is pressed while the
+/// axis's mechanical position lies in its span: an end switch given by one position
+/// (`--left-switch 0=-3000`) reaches to the end of travel, one given by two
+/// (`--left-switch 0=-3500:-3000`) can be driven through (a cam or a light barrier).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct World {
-    /// Left end switch is active while position <= this.
-    pub left_at: [Option<i32>; AXES],
-    /// Right end switch is active while position >= this.
-    pub right_at: [Option<i32>; AXES],
-    /// Home switch is active while position lies in this window (inclusive).
-    pub home_window: [Option<(i32, i32)>; AXES],
+    pub left: [Option<Span>; AXES],
+    pub right: [Option<Span>; AXES],
+    pub home: [Option<Span>; AXES],
     /// Forced switch states (OR-ed with the geometry).
     pub left_forced: [bool; AXES],
     pub right_forced: [bool; AXES],
     pub home_forced: [bool; AXES],
 }
 
+fn inside(s: Option<Span>, x: i32) -> bool {
+    s.is_some_and(|(a, b)| x >= a && x <= b)
+}
+
 impl World {
+    /// A left end switch pressed at and below `pos`.
+    pub fn left_end(pos: i32) -> Span {
+        (i32::MIN, pos)
+    }
+    /// A right end switch pressed at and above `pos`.
+    pub fn right_end(pos: i32) -> Span {
+        (pos, i32::MAX)
+    }
     pub fn left(&self, m: usize, x: i32) -> bool {
-        self.left_forced[m] || self.left_at[m].is_some_and(|l| x <= l)
+        self.left_forced[m] || inside(self.left[m], x)
     }
     pub fn right(&self, m: usize, x: i32) -> bool {
-        self.right_forced[m] || self.right_at[m].is_some_and(|r| x >= r)
+        self.right_forced[m] || inside(self.right[m], x)
     }
     pub fn home(&self, m: usize, x: i32) -> bool {
-        self.home_forced[m] || self.home_window[m].is_some_and(|(a, b)| x >= a && x <= b)
+        self.home_forced[m] || inside(self.home[m], x)
+    }
+    /// Whether axis `m` has a home switch.
+    pub fn has_home(&self, m: usize) -> bool {
+        self.home_forced[m] || self.home[m].is_some()
     }
 }

@@ -1,5 +1,5 @@
 //! One host link (a TCP connection or the pseudo-terminal): the byte stream in binary mode
-//! (9-byte frames, partial frames dropped after a pause) and in ASCII mode (manual §4.4).
+//! (9-byte frames, partial frames dropped after a pause) and in ASCII mode ([TMCL] §4.4).
 
 use crate::chip::Spi429;
 use crate::module::Module;
@@ -75,11 +75,11 @@ impl Link {
     }
 
     fn binary_frame<C: Spi429>(&mut self, m: &mut Module<C>, f: &[u8; 9], out: &mut Vec<u8>) {
-        let was_download = m.download_address().is_some();
         let resp = m.handle_bytes(f);
         out.extend_from_slice(&resp.to_bytes());
         if let Response::Normal(r) = resp {
-            if r.status == Status::Ok.code() && !was_download {
+            // In download mode the module answers 138 and 139 with status 6.
+            if r.status == Status::Ok.code() {
                 if r.op == op::ASCII_MODE {
                     self.mode = Mode::Ascii;
                     self.line.clear();
@@ -98,7 +98,7 @@ impl Link {
         }
         let mut out = Vec::new();
         if let Some(mask) = self.event {
-            if m.reached_mask() & mask == mask {
+            if m.arrived_mask() & mask == mask {
                 self.event = None;
                 let r = m.reply(Status::TargetReachedEvent.code(), op::TARGET_REACHED_EVENT, mask as i32);
                 out.extend_from_slice(&r.to_bytes());
@@ -179,12 +179,12 @@ impl Link {
     }
 }
 
-/// The ASCII address character of an address: 'A' for 1, 'B' for 2, … (manual §4.4.1).
+/// The ASCII address character of an address: 'A' for 1, 'B' for 2, … ([TMCL] §4.4.1).
 pub fn address_char(addr: u8) -> u8 {
     b'A'.wrapping_add(addr.wrapping_sub(1))
 }
 
-/// Commands usable in ASCII mode (manual §4.4.3).
+/// Commands usable in ASCII mode ([TMCL] §4.4.3).
 const ASCII_COMMANDS: &[u8] = &[
     op::ROL,
     op::ROR,

@@ -1,9 +1,9 @@
-//! TMCL binary protocol (firmware manual §4.1, §4.2): 9-byte commands and replies with an
+//! TMCL binary protocol ([TMCL] §4.1, §4.2): 9-byte commands and replies with an
 //! 8-bit sum checksum, and the 7-byte form used without address and checksum.
 
 use std::fmt;
 
-/// Reply status codes (manual §4.2.1), plus the code of the target-reached event reply (§5.7.37).
+/// Reply status codes ([TMCL] §4.2.1), plus the code of the target-reached event reply (§5.7.37).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u8)]
 pub enum Status {
@@ -61,7 +61,7 @@ impl Status {
     }
 }
 
-/// Command numbers (manual §5).
+/// Command numbers ([TMCL] §5).
 pub mod op {
     pub const ROR: u8 = 1;
     pub const ROL: u8 = 2;
@@ -115,7 +115,7 @@ pub mod op {
     pub const ASCII_MODE: u8 = 139;
 }
 
-/// The seven fields every command has (manual §4.1): command, type, motor/bank, value.
+/// The seven fields every command has ([TMCL] §4.1): command, type, motor/bank, value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Instruction {
     pub op: u8,
@@ -128,7 +128,7 @@ impl Instruction {
     pub fn new(op: u8, typ: u8, motor: u8, value: i32) -> Self {
         Instruction { op, typ, motor, value }
     }
-    /// The 7-byte form (no address, no checksum; manual §4.1 "When using CAN bus").
+    /// The 7-byte form (no address, no checksum; [TMCL] §4.1 "When using CAN bus").
     pub fn to_bytes7(&self) -> [u8; 7] {
         let v = self.value.to_be_bytes();
         [self.op, self.typ, self.motor, v[0], v[1], v[2], v[3]]
@@ -138,7 +138,7 @@ impl Instruction {
     }
 }
 
-/// 8-bit sum of all bytes (manual §4.1.1).
+/// 8-bit sum of all bytes ([TMCL] §4.1.1).
 pub fn checksum(bytes: &[u8]) -> u8 {
     bytes.iter().fold(0u8, |s, b| s.wrapping_add(*b))
 }
@@ -191,7 +191,7 @@ impl Command {
     }
 }
 
-/// A reply (manual §4.2): reply (host) address, module address, status, command number, value.
+/// A reply ([TMCL] §4.2): reply (host) address, module address, status, command number, value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Reply {
     pub host: u8,

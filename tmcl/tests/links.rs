@@ -1,4 +1,4 @@
-//! ASCII interface (manual §4.4), binary framing with timeouts, reference search, EEPROM
+//! ASCII interface ([TMCL] §4.4), binary framing with timeouts, reference search, EEPROM
 //! persistence, and the server under garbage and flooding.
 
 mod common;
@@ -7,7 +7,9 @@ use common::*;
 use std::io::{Read, Write};
 use std::time::Duration;
 use tmcl::chip::ModelChip;
+use tmcl::io::World;
 use tmcl::link::{Link, Mode};
+use tmcl::personality::ModuleType;
 use tmcl::proto::{op, Instruction};
 use tmcl::server::{Options, Server};
 use tmcl::{Module, Response};
@@ -101,7 +103,7 @@ fn target_reached_event_138() {
 fn reference_search_left_switch_and_home() {
     let mut m = module();
     // Left end switch of axis 0 active at positions <= -3000.
-    m.world.left_at[0] = Some(-3000);
+    m.world.left[0] = Some(World::left_end(-3000));
     direct(&mut m, op::SAP, 193, 0, 1);
     direct(&mut m, op::SAP, 194, 0, 300);
     direct(&mut m, op::SAP, 195, 0, 20);
@@ -119,7 +121,7 @@ fn reference_search_left_switch_and_home() {
     assert!((mech + 3000 - x).abs() <= 3, "position {x}, mechanical {mech}");
     assert_eq!(direct(&mut m, op::GAP, 11, 0, 0).1, (mech <= -3000) as i32);
     // Mode 7: home switch in positive direction.
-    m.world.home_window[1] = Some((1000, 1200));
+    m.world.home[1] = Some((1000, 1200));
     direct(&mut m, op::SAP, 193, 1, 7);
     direct(&mut m, op::RFS, 0, 1, 0);
     let mut ms = 0;
@@ -135,7 +137,7 @@ fn reference_search_left_switch_and_home() {
 #[test]
 fn end_switch_stops_motor_via_chip() {
     let mut m = module();
-    m.world.right_at[2] = Some(800);
+    m.world.right[2] = Some(World::right_end(800));
     direct(&mut m, op::ROR, 0, 2, 200);
     m.run_ms(500);
     assert_eq!(direct(&mut m, op::GAP, 10, 2, 0).1, 1);
@@ -154,7 +156,7 @@ fn eeprom_persistence_and_corruption() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("module.eep");
     let _ = std::fs::remove_file(&path);
-    let new = || Module::with_eeprom(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000), path.clone());
+    let new = || Module::with_eeprom(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000), ModuleType::Tmcm3110, path.clone());
     {
         let mut m = new().ok().expect("missing file = factory defaults");
         assert_eq!(direct(&mut m, op::GAP, 4, 0, 0), (100, 1000));
@@ -196,6 +198,18 @@ fn eeprom_persistence_and_corruption() {
     std::fs::write(&path, &good[..good.len() - 5]).unwrap();
     let e = new().err().expect("truncated file rejected").1.to_string();
     assert!(e.contains("payload length field"), "{e}");
+    // A stored program must pass the download check; an image of the other module type is
+    // not loaded either.
+    let mut img = tmcl::eeprom::Image::default();
+    img.program = vec![Instruction::new(op::ROR, 0, 0, 5000)];
+    img.save(&path).unwrap();
+    let e = new().err().expect("program refused").1.to_string();
+    assert_eq!(e, "corrupt EEPROM image: program instruction 0: velocity 5000 is outside −2047..2047 (TMC429 units; --module tmcm-1311 takes pps) (status 4)");
+    tmcl::eeprom::Image::factory(ModuleType::Tmcm1311).save(&path).unwrap();
+    let e = new().err().expect("other module type").1.to_string();
+    assert_eq!(e, "corrupt EEPROM image: the image is of a TMCM-1311, this module is a TMCM-3110");
+    let chip = ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000);
+    assert!(Module::with_eeprom(chip, ModuleType::Tmcm1311, path.clone()).is_ok());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -283,7 +297,7 @@ fn ascii(s: &mut std::net::TcpStream, line: &str, reply: &str) {
     assert_eq!(String::from_utf8_lossy(&got), want);
 }
 
-/// The ASCII interface (manual §4.4) over the TCP link: command 139 switches that connection to
+/// The ASCII interface ([TMCL] §4.4) over the TCP link: command 139 switches that connection to
 /// ASCII mode, command lines are echoed character by character (echo mode 00, global parameter
 /// 67 = 0) and answered `BA <status> <value>` CR; another connection stays binary; BIN returns.
 #[test]

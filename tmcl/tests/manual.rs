@@ -1,4 +1,4 @@
-//! The firmware manual's examples, byte for byte, and every status code (manual §4, §5.7).
+//! The firmware manual's examples, byte for byte, and every status code ([TMCL] §4, §5.7).
 
 mod common;
 use common::*;

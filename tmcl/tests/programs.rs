@@ -154,8 +154,7 @@ fn symbolic_constants_example_11_3() {
 
 #[test]
 fn variables_example_11_4() {
-    // The listing with its "..." elisions left out (the manual's AAP stores to an axis
-    // parameter, as printed).
+    // The listing with its "..." elisions left out.
     let src = r#"
 MyVariable = 42
     //Use a symbolic name for the user variable
@@ -167,17 +166,18 @@ AAP MyVariable, 2        //Store contents of the accumulator register to the var
 "#;
     let code = assemble(src);
     assert_eq!(code[0], Instruction::new(op::SGP, 42, 2, 1234));
+    // As printed, the last line stores with AAP (accumulator to axis parameter 42 of motor 2)
+    // where AGP is meant: the module refuses it at download, naming the reason.
     let mut m = module();
-    start(&mut m, &code);
-    m.run_ms(5);
-    assert_eq!(m.vm.state, AppState::Stop);
-    assert_eq!(m.vm.accu, 2468);
-    assert_eq!(m.user_var(42), 1234);
+    let e = m.load_program(&code).unwrap_err();
+    assert_eq!(e, "instruction 3 (AAP 42, 2, 0): axis parameter 42: not an axis parameter of the TMCM-3110 (status 3)");
     // With AGP (accumulator to global parameter) the variable takes the result.
     let mut c2 = code.clone();
     c2[3] = Instruction::new(op::AGP, 42, 2, 0);
     start(&mut m, &c2);
     m.run_ms(5);
+    assert_eq!(m.vm.state, AppState::Stop);
+    assert_eq!(m.vm.accu, 2468);
     assert_eq!(m.user_var(42), 2468);
 }
 
@@ -229,8 +229,8 @@ fn mixing_direct_and_standalone_11_6() {
                                                             // Address 0: the first function moves to 1000 and back to 0, then stops.
     assert_eq!(direct(&mut m, op::APP_RUN, 1, 0, 0).0, 100);
     let mut seen = 0;
-    for _ in 0..300 {
-        m.run_ms(10);
+    for _ in 0..3000 {
+        m.run_ms(1);
         seen = seen.max(direct(&mut m, op::GAP, 1, 0, 0).1);
         if m.vm.state == AppState::Stop {
             break;
@@ -259,7 +259,7 @@ fn subroutine_example_5_7_20() {
 
 #[test]
 fn calc_comp_jc_and_nesting() {
-    // Eight levels of subroutines; a ninth call is ignored (manual §5.7.20).
+    // Eight levels of subroutines; a ninth call is ignored ([TMCL] §5.7.20).
     let mut src = String::from("CALC LOAD, 5\nCALCX LOAD\nCALC MUL, 3\nCALCX SUB\nCOMP 10\nJC EQ, Ok1\nSTOP\nOk1: CALCX SWAP\n");
     src.push_str("CSUB S1\nSTOP\n");
     for i in 1..=9 {
@@ -306,7 +306,7 @@ fn assembler_errors_name_file_and_line() {
     assert_eq!(e.to_string(), "bad.tmc:1: SAP expects 3 operand(s), found 2");
 }
 
-/// Global parameter 68, serial heartbeat (manual §10.1: "If this time limit is up and no further
+/// Global parameter 68, serial heartbeat ([TMCL] §10.1: "If this time limit is up and no further
 /// command is noticed the motor will be stopped"): commands every 50 ms keep a 100 ms heartbeat
 /// alive; without them every motor is stopped (target speed 0, ramped down to 0); a new command
 /// re-arms it.
@@ -375,7 +375,7 @@ Target0:                    //user variable 12 = the position at "target reached
 "#;
 
 /// Program interrupts from a stop switch (27..32), an input (39..46) and "target reached" (3..5)
-/// (manual §5.7 EI/VECT, bank 3 of SGP): each handler runs once per configured edge and not on
+/// ([TMCL] §5.7 EI/VECT, bank 3 of SGP): each handler runs once per configured edge and not on
 /// the other edge; the target interrupt runs when axis 0 arrives at 2000.
 #[test]
 fn switch_input_and_target_interrupts_of_a_program() {
