@@ -33,6 +33,8 @@ enum Command {
     Demo(cmd::demo::Args),
     /// Registers from speed and acceleration, or Hz, Hz/s and braking distance from registers.
     Calc(cmd::calc::Args),
+    /// Logic-analyzer captures: export a simulation's pins, compare a chip's capture with the model.
+    Capture(cmd::capture::Args),
 }
 
 /// Exit status of a command.
@@ -62,13 +64,15 @@ fn main() -> ExitCode {
         Command::Run(a) => cmd::run::run(a),
         Command::Demo(a) => cmd::demo::run(a),
         Command::Calc(a) => cmd::calc::run(a),
+        Command::Capture(a) => cmd::capture::run(a),
     };
     match res {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,
         Ok(Outcome::Failed) => ExitCode::from(1),
         Err(UserError(msg)) => {
+            // Messages quote input; whatever they quote reaches the terminal escaped.
             for line in msg.lines() {
-                eprintln!("tmc429: error: {line}");
+                eprintln!("tmc429: error: {}", tmc429_model::text::escaped(line));
             }
             ExitCode::from(2)
         }

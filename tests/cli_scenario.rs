@@ -278,8 +278,8 @@ fn demo_on_the_model() {
         assert_eq!(last, want);
     }
     let chain = std::fs::read_to_string(d.join("chain-demo-tmc429.csv")).unwrap();
-    assert!(out.contains("datagrams:    1138 (driver chain)\n"), "{out}");
-    assert_eq!(chain.lines().count(), 1 + 1138);
+    assert!(out.contains("datagrams:    1156 (driver chain)\n"), "{out}");
+    assert_eq!(chain.lines().count(), 1 + 1156);
     // the model-side VCD: motor 2's latch is armed and REF3 closes at the latched position
     let mut w = wellen::simple::read(d.join("demo.vcd")).unwrap();
     let h = w.hierarchy();
@@ -310,7 +310,7 @@ fn demo_print_is_the_bundled_file() {
     assert_eq!(text(&o.stdout), std::fs::read_to_string(example("demo.toml")).unwrap());
 }
 
-/// `tmc429 calc` from registers: spec-digest §5.6 (R, ΔR, S at 16 MHz) and §5.5 (pmulpdiv.c).
+/// `tmc429 calc` from registers: TMC429 §8.1.13 (R, ΔR, S at 16 MHz) and §8.1.10.2.3 (pmulpdiv.c).
 #[test]
 fn calc_from_registers_reproduces_the_datasheet() {
     let o = tmc429(&[
@@ -341,7 +341,7 @@ fn calc_from_registers_reproduces_the_datasheet() {
     let out = text(&o.stdout);
     assert!(out.contains("acceleration  476837158.20 Hz/s microsteps"), "{out}");
     assert!(out.contains("step rate     499755.86 Hz microsteps"), "{out}");
-    // §5.5 rows: a_max, ramp_div, pulse_div, p_reduction -> p_mul, p_div, lower, upper
+    // pmulpdiv.c results ([429] §8.1.10.2.3): a_max, ramp_div, pulse_div, p_reduction -> p_mul, p_div, lower, upper
     for (a, rd, pd, red, pm, pdv, lo, hi) in [
         ("10", "3", "3", "0.05", 151, 8, 1, 4095),
         ("1000", "3", "3", "0.05", 237, 2, 1, 4095),

@@ -71,6 +71,24 @@ fn bad_options_exit_2() {
     let o = tmc429(&["spi", "/nonexistent/script.spi"], "");
     assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("/nonexistent/script.spi: cannot read"));
+    let o = tmc429(&["spi", "--package", "dil20"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("--package: tmc429 has no dil20 package: expected qfn32 or sop24 or ssop16"), "{}", text(&o.stderr));
+    let o = tmc429(&["spi", "--package", "soic8"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("unknown package 'soic8'"));
+}
+
+/// `--package` (C90): REFR3 low with en_refr = 1 reads r3 = 0 on the QFN32 and 1 on the SOP24,
+/// whose r3 "always reads as high level (internal pull-ups)" ([429] §8.2.4.5).
+#[test]
+fn package_option() {
+    let script = "pin REFR1=0 REFR2=0 REFR3=0\n0x68000100\n0x7D000000\n";
+    for (package, r3) in [("qfn32", "15000000"), ("sop24", "15000010")] {
+        let o = tmc429(&["spi", "--package", package], script);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        assert_eq!(text(&o.stdout).lines().last(), Some(r3), "{package}");
+    }
 }
 
 /// docs/regmap.md is the generated Markdown, byte for byte.
@@ -80,6 +98,18 @@ fn regmap_doc_is_generated() {
     assert_eq!(o.status.code(), Some(0));
     let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regmap.md")).unwrap();
     assert!(text(&o.stdout) == doc, "docs/regmap.md is stale: run `tmc429 regmap --format md > docs/regmap.md`");
+}
+
+/// rtl/tmc429_regmap.vh is the generated Verilog header, byte for byte, and names the datasheet's
+/// values (TMC428 Table 7-2: clk_config is IDX 12; §8.14: pulse_div is bits 15..12).
+#[test]
+fn regmap_verilog_is_the_rtl_header() {
+    let o = tmc429(&["regmap", "--format", "verilog"], "");
+    assert!(o.status.success());
+    let vh = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/rtl/tmc429_regmap.vh")).unwrap();
+    assert!(text(&o.stdout) == vh, "rtl/tmc429_regmap.vh is stale: run `tmc429 regmap --format verilog > rtl/tmc429_regmap.vh`");
+    assert!(vh.contains("\n`define TMC429_IDX_CLK_CONFIG 4'd12\n"));
+    assert!(vh.contains("\n`define TMC429_F_PULSE_DIV 15:12 "));
 }
 
 #[test]
@@ -94,7 +124,7 @@ fn regmap_c_and_json() {
 }
 
 /// `--events`: continuous-update datagrams of the TMC429's power-on chain configuration
-/// ($87F87F87F, spec-digest §5.2) and INT changes, in cycle order between the frame lines.
+/// ($87F87F87F, TMC429 §11.4.2) and INT changes, in cycle order between the frame lines.
 #[test]
 fn events_in_cycle_order() {
     let script = "0x7E010F02\nwait 25000\n0x16000100\n0x00000005\n0x00000000\n0x16000101\n";
@@ -102,7 +132,7 @@ fn events_in_cycle_order() {
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     let out = text(&o.stdout);
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(&lines[..3], ["260 15000000", "chain 12511 36 87F87F87F", "chain 23423 36 87F87F87F"], "{out}");
+    assert_eq!(&lines[..3], ["260 15000000", "chain 12479 36 87F87F87F", "chain 23391 36 87F87F87F"], "{out}");
     // POS_END unmasked, x_target away and back: INT rises after the frame that returns, and falls
     // after the frame that clears the flag.
     let int_lines: Vec<&str> = lines.iter().copied().filter(|l| l.starts_with("int ")).collect();

@@ -47,7 +47,8 @@ fn split_csv(l: &str) -> Vec<String> {
 fn build_chip_tb(dir: &Path, define: Option<&str>) -> PathBuf {
     let vvp = dir.join(format!("tb_chip{}.vvp", define.map(|d| format!("_{d}")).unwrap_or_default()));
     let mut c = Command::new("iverilog");
-    c.args(["-g2005", "-P", "tb_chip.CHIP=1", "-I"]).arg(root().join("vectors/tb")).arg("-o").arg(&vvp);
+    c.args(["-g2005", "-P", "tb_chip.CHIP=1", "-I"]).arg(root().join("vectors/tb")).arg("-I").arg(root().join("rtl"));
+    c.arg("-o").arg(&vvp);
     if let Some(d) = define {
         c.arg(format!("-D{d}"));
     }
@@ -199,7 +200,7 @@ fn spi_csv_has_the_datasheet_examples() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// Digest §5.2: the datagrams of the Table 11-2 configuration with the Table 12-2 LUT, and the
+/// TMC428 §11.2: the datagrams of the Table 11-2 configuration with the Table 12-2 LUT, and the
 /// cover example, with the decoded signals of each motor.
 #[test]
 fn chain_csv_has_the_table_11_2_datagrams_and_the_cover() {
@@ -215,7 +216,7 @@ fn chain_csv_has_the_table_11_2_datagrams_and_the_cover() {
     assert!(rows.iter().all(|r| r[5] == "3" && r[4] == "1"));
     // the cycle of the end is after the start: 36 bits, SCK_S period 16 CLK at clk2_div 7
     let (s, e): (u64, u64) = (rows[0][0].parse().unwrap(), rows[0][1].parse().unwrap());
-    assert_eq!(e - s, (36 + 2) * 16 + 2 * 16, "C82: SETUP, 36 bits, 2 NxM gaps, HOLD");
+    assert_eq!(e - s, 8 + 36 * 16 + 2 * 16 + 8, "C82: SETUP (t_HDSCSdrv 8), 36 bits, 2 NxM gaps, HOLD 8");
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -306,10 +307,15 @@ fn bad_usage_exits_2_without_files() {
     for (args, msg) in [
         (vec!["--unit", "motor", "--scenario", "datasheet", "--out", d], "unknown unit"),
         (vec!["--unit", "spi", "--scenario", "nope", "--out", d], "neither a built-in scenario"),
-        (vec!["--unit", "chip", "--scenario", "datasheet", "--format", "csv", "--out", d], "pin-level vectors only"),
+        (vec!["--unit", "chip", "--scenario", "datasheet", "--format", "csv", "--out", d], "unit chip has no CSV form"),
         (vec!["--unit", "lut", "--scenario", "datasheet", "--out", d], "use --scenario tables"),
         (vec!["--unit", "spi", "--scenario", s, "--out", d], "bad.txt:2: expected a decimal cycle count"),
         (vec!["--unit", "spi", "--scenario", "datasheet", "--out", "/proc/nonexistent/x"], "cannot create"),
+        (
+            vec!["--unit", "chip", "--scenario", "datasheet", "--chip", "tmc4210", "--package", "qfn32", "--out", d],
+            "tmc4210 has no qfn32 package",
+        ),
+        (vec!["--unit", "chip", "--scenario", "x.toml", "--package", "sop24", "--out", d], "runs in its variant's full package"),
     ] {
         let out = tmc429().arg("vectors").args(&args).output().unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?}");
@@ -374,7 +380,7 @@ fn toml_scenario_vectors() {
             ["269", "04000001", "15000000", "write", "v_min[0]"],
             ["537", "060007FF", "15000000", "write", "v_max[0]"],
             ["805", "0C0003E8", "15000000", "write", "a_max[0]"],
-            // pmulpdiv.c, a_max 1000, ramp_div = pulse_div, 1 %: p_mul 247, p_div 2 (digest §5.5)
+            // pmulpdiv.c, a_max 1000, ramp_div = pulse_div, 1 %: p_mul 247, p_div 2 (TMC429 §8.1.10.2.3)
             ["1073", "1200F702", "15000000", "write", "pmul_pdiv[0]"],
             ["1341", "000003E8", "15000000", "write", "x_target[0]"],
             ["1760001", "03000000", "150003E8", "read", "x_actual[0]"],
@@ -617,6 +623,8 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
     let o = Command::new("iverilog")
         .args(["-g2005", "-P", "tb_ramp.CHIP=1", "-I"])
         .arg(root().join("vectors/tb"))
+        .arg("-I")
+        .arg(root().join("rtl"))
         .arg("-o")
         .arg(&vvp)
         .arg(root().join("vectors/tb/tb_ramp.v"))
@@ -657,28 +665,31 @@ fn chain_pins_replay_and_report_a_planted_fault() {
     let dir = tmpdir("chainpins");
     export(&dir, &["--unit", "chain", "--scenario", "chain-unit", "--format", "pins"]);
     let stem = dir.join("chain-chain-unit-tmc429");
-    assert_eq!((meta(&stem, "width").as_str(), meta(&stem, "in_width").as_str(), meta(&stem, "out_width").as_str()), ("200", "104", "88"));
+    assert_eq!((meta(&stem, "width").as_str(), meta(&stem, "in_width").as_str(), meta(&stem, "out_width").as_str()), ("204", "105", "88"));
     let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
     let lines: Vec<&str> = hex.lines().collect();
     let cycles: usize = meta(&stem, "cycles").parse().unwrap();
     assert_eq!(lines.len(), cycles);
-    // word bits: A 199..196 | inputs 195..92 (rst 195, spi_mode 193, cw 135, dgw 134)
-    // | outputs 91..4 (cover_busy 80, dgw_busy 79, cs 30, sdo 28, state 20..18) | _check 3..0
+    // word bits: A 203..200 | inputs 199..95 (rst 199, spi_mode 197, cw 139, dgw 138)
+    // | outputs 94..7 (cover_busy 83, dgw_busy 82, cs 33, sdo 31, state 23..21) | _check 6..0
+    // (3 zero pad bits and the check digit)
     let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
     let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
-    assert_eq!((field(lines[0], 195, 1), field(lines[1], 195, 1)), (1, 0));
+    assert_eq!((field(lines[0], 199, 1), field(lines[1], 199, 1)), (1, 0));
     // the abort: a busy chain sees spi_mode 0, goes to IDLE with CS inactive; the next line
     // presents cw and dgw waiting again (the register file took them back, C89)
-    let a = (1..cycles).find(|&k| field(lines[k], 193, 1) == 0).expect("an en_sd abort");
-    assert_ne!(field(lines[a - 1], 18, 3), 0, "busy before the abort");
-    assert_eq!((field(lines[a - 1], 80, 1), field(lines[a - 1], 79, 1)), (1, 1));
-    assert_eq!((field(lines[a], 18, 3), field(lines[a], 30, 1), field(lines[a], 80, 1), field(lines[a], 79, 1)), (0, 0, 0, 0));
-    assert_eq!((field(lines[a + 1], 135, 1), field(lines[a + 1], 134, 1)), (1, 1));
+    let a = (1..cycles).find(|&k| field(lines[k], 197, 1) == 0).expect("an en_sd abort");
+    assert_ne!(field(lines[a - 1], 21, 3), 0, "busy before the abort");
+    assert_eq!((field(lines[a - 1], 83, 1), field(lines[a - 1], 82, 1)), (1, 1));
+    assert_eq!((field(lines[a], 21, 3), field(lines[a], 33, 1), field(lines[a], 83, 1), field(lines[a], 82, 1)), (0, 0, 0, 0));
+    assert_eq!((field(lines[a + 1], 139, 1), field(lines[a + 1], 138, 1)), (1, 1));
 
     let vvp = dir.join("tb_chain.vvp");
     let o = Command::new("iverilog")
         .args(["-g2005", "-P", "tb_chain.CHIP=1", "-I"])
         .arg(root().join("vectors/tb"))
+        .arg("-I")
+        .arg(root().join("rtl"))
         .arg("-o")
         .arg(&vvp)
         .arg(root().join("vectors/tb/tb_chain.v"))
@@ -690,15 +701,16 @@ fn chain_pins_replay_and_report_a_planted_fault() {
     let out = replay(&vvp, &stem, None);
     assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
 
-    // flip `sdo` (word bit 28: bit 0 of the 8th digit from the right) of the first line with
-    // SDO_S high, and the same bit of the check digit (the last)
-    let k = lines.iter().position(|l| field(l, 28, 1) == 1).expect("an SDO_S high bit");
+    // flip `sdo` (word bit 31: bit 3 of the 8th digit from the right) of the first line with
+    // SDO_S high while the chip select is active (a datagram bit; SDO_S idles high, C81), and
+    // the same bit of the check digit (the last)
+    let k = lines.iter().position(|l| field(l, 31, 1) == 1 && field(l, 33, 1) == 1).expect("an SDO_S high bit");
     let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
     let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
     let mut c: Vec<char> = bad[k].chars().collect();
     let n = c.len();
-    c[n - 1 - 7] = flip(c[n - 1 - 7] as u8, 1);
-    c[n - 1] = flip(c[n - 1] as u8, 1);
+    c[n - 1 - 7] = flip(c[n - 1 - 7] as u8, 8);
+    c[n - 1] = flip(c[n - 1] as u8, 8);
     bad[k] = c.into_iter().collect();
     let planted = dir.join("planted.hex");
     std::fs::write(&planted, bad.join("\n") + "\n").unwrap();

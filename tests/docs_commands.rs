@@ -1,7 +1,12 @@
-//! Every command the user guide shows runs: the ```sh blocks of README.md and
-//! docs/scenarios.md, with `cargo run --release --`, `target/release/tmc429` and a leading
-//! `tmc429` standing for the binary under test, each block as one bash script (`set -e`) in a
-//! scratch directory that sees the repository's `examples/`.
+//! Every command the user guide shows runs: the ```sh blocks of README.md, docs/scenarios.md,
+//! docs/tmcl.md, docs/vectors.md and docs/fpga.md, with `cargo run --release --`,
+//! `target/release/tmc429` and a leading `tmc429` standing for the binary under test, each block
+//! as one bash script (`set -e`) in a scratch directory that sees the repository's `examples/`,
+//! `rtl/`, `vectors/`, `fpga/`, `scripts/` and `tests/`. docs/bench.md's blocks run the same way,
+//! with the decoders of `sigrok/` at hand. docs/fpga.md's blocks synthesize and place and route
+//! for minutes: that test is `#[ignore]`d and scripts/test runs it on its own
+//! (`cargo test --release --test docs_commands -- --ignored`). ```text blocks are synopses and
+//! the documented full runs, not run.
 //!
 //! Not run here: the set-up and test scripts themselves (`./scripts/setup`, `./scripts/test`),
 //! builds (`cargo build`, `make`), `gtkwave` (a GUI) and `tmcl serve` (runs until stopped;
@@ -51,6 +56,12 @@ fn script(block: &str, bin: &str) -> String {
 }
 
 fn run_doc(rel: &str) {
+    run_doc_with(rel, &[]);
+}
+
+/// Runs the blocks of a document with extra environment variables (`{dir}` in a value is the
+/// scratch directory).
+fn run_doc_with(rel: &str, env: &[(&str, &str)]) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let md = std::fs::read_to_string(root.join(rel)).unwrap();
     let bin = env!("CARGO_BIN_EXE_tmc429");
@@ -60,10 +71,16 @@ fn run_doc(rel: &str) {
     let dir = std::env::temp_dir().join(format!("tmc429-docs-{}-{}", rel.replace('/', "_"), std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    std::os::unix::fs::symlink(root.join("examples"), dir.join("examples")).unwrap();
+    for d in ["examples", "rtl", "vectors", "fpga", "scripts", "tests", "sigrok"] {
+        std::os::unix::fs::symlink(root.join(d), dir.join(d)).unwrap();
+    }
     for (line, block) in &blocks {
         let sc = script(block, bin);
-        let o = Command::new("bash").arg("-c").arg(&sc).current_dir(&dir).output().unwrap();
+        let mut cmd = Command::new("bash");
+        for (k, v) in env {
+            cmd.env(k, v.replace("{dir}", dir.to_str().unwrap()));
+        }
+        let o = cmd.arg("-c").arg(&sc).current_dir(&dir).output().unwrap();
         assert!(
             o.status.success(),
             "{rel}:{line}: the block fails ({:?}):\n{sc}\nstdout:\n{}\nstderr:\n{}",
@@ -83,6 +100,23 @@ fn readme_commands_run() {
 #[test]
 fn scenarios_guide_commands_run() {
     run_doc("docs/scenarios.md");
+}
+
+#[test]
+fn tmcl_guide_commands_run() {
+    run_doc("docs/tmcl.md");
+}
+
+#[test]
+fn vectors_guide_commands_run() {
+    run_doc("docs/vectors.md");
+}
+
+/// Minutes of synthesis and place and route: scripts/test runs it with `--ignored`.
+#[test]
+#[ignore]
+fn fpga_guide_commands_run() {
+    run_doc("docs/fpga.md");
 }
 
 /// The files the README's first command names exist after it.
@@ -115,4 +149,11 @@ fn readme_first_command_writes_what_it_names() {
         assert!(dir.join("demo-out").join(f).is_file(), "demo-out/{f}");
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// docs/bench.md installs the decoders into the user's data directory: here the scratch
+/// directory's (sigrok-cli, a GLib program, follows XDG_DATA_HOME).
+#[test]
+fn bench_guide_commands_run() {
+    run_doc_with("docs/bench.md", &[("XDG_DATA_HOME", "{dir}/xdg")]);
 }

@@ -1,4 +1,5 @@
-//! Options shared by the subcommands (ARCHITECTURE.md, command line).
+//! Pieces shared by the subcommands: the chip options (`--chip`, `--fclk`, `--package`), reading an
+//! input file, the progress line.
 
 use clap::Args;
 use tmc429_model::Chip;
@@ -25,6 +26,18 @@ pub fn parse_chip(s: &str) -> Result<Chip, String> {
     s.parse()
 }
 
+pub fn parse_package(s: &str) -> Result<tmc429_model::Package, String> {
+    s.parse()
+}
+
+/// The chip in `package` (docs/model-contract.md C90), or in its full package.
+pub fn chip_in(chip: Chip, package: Option<tmc429_model::Package>) -> Result<tmc429_model::Tmc429, crate::UserError> {
+    match package {
+        Some(p) => tmc429_model::Tmc429::with_package(chip, p).map_err(|e| crate::UserError(format!("--package: {e}"))),
+        None => Ok(tmc429_model::Tmc429::new(chip)),
+    }
+}
+
 pub fn parse_fclk(s: &str) -> Result<u64, String> {
     let t = s.trim();
     let (num, mult) = if let Some(n) = t.strip_suffix("MHz").or_else(|| t.strip_suffix("M")) {
@@ -34,7 +47,10 @@ pub fn parse_fclk(s: &str) -> Result<u64, String> {
     } else {
         (t.strip_suffix("Hz").unwrap_or(t), 1.0)
     };
-    let v: f64 = num.trim().parse().map_err(|_| format!("expected a frequency in Hz (e.g. 16000000 or 16MHz), found '{s}'"))?;
+    let v: f64 = num
+        .trim()
+        .parse()
+        .map_err(|_| format!("expected a frequency in Hz (e.g. 16000000 or 16MHz), found '{}'", tmc429_model::text::shown(s)))?;
     let hz = v * mult;
     if !(1.0..=1e9).contains(&hz) {
         return Err(format!("frequency {s} out of range (1 Hz .. 1 GHz)"));
@@ -43,17 +59,20 @@ pub fn parse_fclk(s: &str) -> Result<u64, String> {
 }
 
 /// Reads a file argument, or standard input for `-` / none. Returns (name for messages, text).
+/// Input that is not UTF-8 is an error naming the line and byte offset of the first bad byte.
 pub fn read_input(path: Option<&std::path::Path>) -> Result<(String, String), crate::UserError> {
     use std::io::Read;
+    use tmc429_model::text;
     match path {
         Some(p) if p.as_os_str() != "-" => {
-            let text = std::fs::read_to_string(p).map_err(|e| crate::UserError(format!("{}: cannot read: {e}", p.display())))?;
+            let text = text::read_file(p).map_err(crate::UserError)?;
             Ok((p.display().to_string(), text))
         }
         _ => {
-            let mut s = String::new();
-            std::io::stdin().read_to_string(&mut s).map_err(|e| crate::UserError(format!("<stdin>: cannot read: {e}")))?;
-            Ok(("<stdin>".to_string(), s))
+            let mut b = Vec::new();
+            std::io::stdin().read_to_end(&mut b).map_err(|e| crate::UserError(format!("<stdin>: cannot read: {e}")))?;
+            let text = text::utf8(b).map_err(|e| crate::UserError(format!("<stdin>:{e}")))?;
+            Ok(("<stdin>".to_string(), text))
         }
     }
 }
@@ -104,7 +123,7 @@ pub fn check_output(opt: &str, p: &std::path::Path) -> Result<(), crate::UserErr
     if !dir.is_dir() {
         return Err(crate::UserError(format!("{opt} {}: directory {} does not exist", p.display(), dir.display())));
     }
-    let probe = tmc429_scenario::run::tmp_path(p);
+    let probe = tmc429_testbench::vectors::files::tmp_path(p);
     std::fs::File::create(&probe).map_err(|e| crate::UserError(format!("{opt} {}: cannot write: {e}", p.display())))?;
     let _ = std::fs::remove_file(&probe);
     Ok(())

@@ -1,5 +1,6 @@
 //! One module per subcommand.
 pub mod calc;
+pub mod capture;
 pub mod common;
 pub mod cosim;
 pub mod demo;

@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use tmc429_model::regmap_render;
+use tmc429_model::{regmap_render, regmap_sigrok, regmap_verilog};
 
 use crate::{Outcome, UserError};
 
@@ -11,6 +11,10 @@ pub enum Format {
     Md,
     C,
     Json,
+    /// The register table of the sigrok decoder (sigrok/tmc429/regmap.py).
+    Sigrok,
+    /// The Verilog header of the RTL's register decode (rtl/tmc429_regmap.vh).
+    Verilog,
 }
 
 #[derive(clap::Args)]
@@ -25,6 +29,8 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
         Format::Md => regmap_render::markdown(),
         Format::C => regmap_render::c_header(),
         Format::Json => regmap_render::json(),
+        Format::Sigrok => regmap_sigrok::python(),
+        Format::Verilog => regmap_verilog::header(),
     };
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()) {

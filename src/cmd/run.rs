@@ -116,10 +116,7 @@ pub fn conclude(r: &Report) -> Outcome {
     Outcome::Failed
 }
 
+/// Writes `bytes` as the whole file `p` (temporary file, renamed when complete).
 pub fn write_atomic(p: &Path, bytes: &[u8]) -> Result<(), UserError> {
-    let tmp = tmc429_scenario::run::tmp_path(p);
-    std::fs::write(&tmp, bytes).and_then(|_| std::fs::rename(&tmp, p)).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        UserError(format!("{}: cannot write: {e}", p.display()))
-    })
+    tmc429_testbench::vectors::files::write_whole(p, bytes).map_err(UserError)
 }

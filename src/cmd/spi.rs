@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use tmc429_model::host::Host;
 use tmc429_model::script::{self, RunOptions};
 
-use super::common::{read_input, ChipArgs};
+use super::common::{chip_in, parse_package, read_input, ChipArgs};
 use crate::{Outcome, UserError};
 
 #[derive(clap::Args)]
@@ -15,6 +15,11 @@ pub struct Args {
     pub script: Option<PathBuf>,
     #[command(flatten)]
     pub chip: ChipArgs,
+    /// Package: the pins it lacks are tied off, its absent REFR inputs read high (C90).
+    /// tmc428: sop24 (default), dil20, ssop16; tmc429: qfn32 (default), sop24, ssop16;
+    /// tmc4210: ssop16.
+    #[arg(long, value_parser = parse_package)]
+    pub package: Option<tmc429_model::Package>,
     /// CLK cycles per SCK_C half period (at least 3, TMC428 Table 6-1).
     #[arg(long, default_value_t = 4)]
     pub sck_half: u32,
@@ -33,7 +38,7 @@ pub struct Args {
 pub fn run(a: Args) -> Result<Outcome, UserError> {
     let (name, text) = read_input(a.script.as_deref())?;
     let lines = script::parse(&text, &name).map_err(|errs| UserError(errs.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n")))?;
-    let mut host = Host::new(a.chip.chip);
+    let mut host = Host::from_chip(chip_in(a.chip.chip, a.package)?);
     host.set_sck_half(a.sck_half).map_err(|e| UserError(format!("--sck-half: {e}")))?;
     let opts = RunOptions { timestamps: a.timestamps, decode: a.decode, events: a.events };
     let stdout = std::io::stdout();

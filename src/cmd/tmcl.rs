@@ -1,5 +1,5 @@
-//! `tmc429 tmcl`: the TMCL module layer (crate `tmcl`): serve a virtual TMCM-3110,
-//! assemble, disassemble and run TMCL programs.
+//! `tmc429 tmcl`: the TMCL module layer (crate `tmcl`): serve a virtual TMCM-3110 or
+//! TMCM-1311, assemble, disassemble and run TMCL programs.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -7,7 +7,10 @@ use std::path::{Path, PathBuf};
 use tmcl::asm;
 use tmcl::chip::ModelChip;
 use tmcl::module::{AppState, Module};
+use tmcl::personality::ModuleType;
 use tmcl::server::{Options, Server};
+
+use tmc429_model::text::shown;
 
 use crate::{Outcome, UserError};
 
@@ -31,6 +34,9 @@ pub enum Sub {
 
 #[derive(clap::Args)]
 pub struct ModuleArgs {
+    /// Module type: tmcm-3110 (three axes, TMC429 units) or tmcm-1311 (one axis, pps, pps²).
+    #[arg(long = "module", default_value = "tmcm-3110", value_parser = parse_module)]
+    pub module: ModuleType,
     /// EEPROM image file (missing: factory defaults, created on the first store).
     #[arg(long)]
     pub eeprom: Option<PathBuf>,
@@ -46,10 +52,12 @@ pub struct ModuleArgs {
     /// Supply voltage in 1/10 V (GIO 8, 1).
     #[arg(long, default_value_t = 240)]
     pub supply: u16,
-    /// Left end switch of an axis: AXIS=POS (active at positions <= POS); repeatable.
+    /// Left end switch of an axis: AXIS=POS (pressed at positions <= POS) or AXIS=FROM:TO
+    /// (pressed inside, can be driven through); repeatable.
     #[arg(long = "left-switch", value_name = "AXIS=POS")]
     pub left: Vec<String>,
-    /// Right end switch of an axis: AXIS=POS (active at positions >= POS); repeatable.
+    /// Right end switch of an axis: AXIS=POS (pressed at positions >= POS) or AXIS=FROM:TO;
+    /// repeatable.
     #[arg(long = "right-switch", value_name = "AXIS=POS")]
     pub right: Vec<String>,
     /// Home switch of an axis: AXIS=FROM:TO (active inside the window); repeatable.
@@ -110,49 +118,79 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
     }
 }
 
+fn parse_module(s: &str) -> Result<ModuleType, String> {
+    ModuleType::parse(s).ok_or_else(|| format!("unknown module type '{s}': expected tmcm-3110 or tmcm-1311"))
+}
+
 fn parse_hz(s: &str) -> Result<u64, String> {
     let t = s.trim();
     let (n, mult) = match t.strip_suffix("MHz") {
         Some(n) => (n, 1_000_000f64),
         None => (t.strip_suffix("Hz").unwrap_or(t), 1.0),
     };
-    let v: f64 = n.trim().parse().map_err(|_| format!("expected a frequency in Hz (e.g. 16000000 or 16MHz), found '{s}'"))?;
+    let v: f64 = n.trim().parse().map_err(|_| format!("expected a frequency in Hz (e.g. 16000000 or 16MHz), found '{}'", shown(s)))?;
     let hz = v * mult;
     if !(1000.0..=1e9).contains(&hz) {
-        return Err(format!("frequency {s} out of range (1 kHz .. 1 GHz)"));
+        return Err(format!("frequency {} out of range (1 kHz .. 1 GHz)", shown(s)));
     }
     Ok(hz.round() as u64)
 }
 
 fn kv<'a>(opt: &str, s: &'a str) -> Result<(i64, &'a str), UserError> {
-    let (k, v) = s.split_once('=').ok_or_else(|| UserError(format!("--{opt} {s}: expected KEY=VALUE")))?;
-    let k: i64 = k.trim().parse().map_err(|_| UserError(format!("--{opt} {s}: '{k}' is not a number")))?;
+    let (k, v) = s.split_once('=').ok_or_else(|| UserError(format!("--{opt} {}: expected KEY=VALUE", shown(s))))?;
+    let k: i64 = k.trim().parse().map_err(|_| UserError(format!("--{opt} {}: '{}' is not a number", shown(s), shown(k))))?;
     Ok((k, v.trim()))
 }
 
 fn num(opt: &str, s: &str, v: &str) -> Result<i64, UserError> {
-    v.parse().map_err(|_| UserError(format!("--{opt} {s}: '{v}' is not a number")))
+    v.parse().map_err(|_| UserError(format!("--{opt} {}: '{}' is not a number", shown(s), shown(v))))
 }
 
-fn axis(opt: &str, s: &str, k: i64) -> Result<usize, UserError> {
-    if (0..3).contains(&k) {
+/// A switch position: compared with the axis' actual position, a signed 32-bit axis parameter;
+/// a value outside that range is an error, never cut to 32 bits.
+fn position(opt: &str, s: &str, v: &str) -> Result<i32, UserError> {
+    let x = num(opt, s, v)?;
+    i32::try_from(x).map_err(|_| UserError(format!("--{opt} {}: position {x} out of range {}..{}", shown(s), i32::MIN, i32::MAX)))
+}
+
+fn axis(kind: ModuleType, opt: &str, s: &str, k: i64) -> Result<usize, UserError> {
+    let n = kind.axes() as i64;
+    if (0..n).contains(&k) {
         Ok(k as usize)
     } else {
-        Err(UserError(format!("--{opt} {s}: axis {k} out of range 0..2")))
+        Err(UserError(format!("--{opt} {}: axis {k} out of range 0..{} of the {}", shown(s), n - 1, kind.name())))
+    }
+}
+
+/// A switch's span: one position (an end switch to the end of travel: `end`) or FROM:TO.
+fn span(opt: &str, s: &str, v: &str, end: fn(i32) -> tmcl::io::Span) -> Result<tmcl::io::Span, UserError> {
+    let n = |x: &str| position(opt, s, x.trim());
+    match v.split_once(':') {
+        Some((a, b)) => {
+            let (a, b) = (n(a)?, n(b)?);
+            if a > b {
+                return Err(UserError(format!("--{opt} {}: FROM {a} is above TO {b}", shown(s))));
+            }
+            Ok((a, b))
+        }
+        None => Ok(end(n(v)?)),
     }
 }
 
 fn build_module(a: &ModuleArgs) -> Result<Module<ModelChip>, UserError> {
     let chip = ModelChip::new(tmc429_model::Chip::Tmc429, a.fclk);
+    let kind = a.module;
     let mut m = match &a.eeprom {
-        Some(p) => Module::with_eeprom(chip, p.clone()).map_err(|(_, e)| UserError(format!("{}: {e}; nothing was loaded", p.display())))?,
-        None => Module::new(chip),
+        Some(p) => {
+            Module::with_eeprom(chip, kind, p.clone()).map_err(|(_, e)| UserError(format!("{}: {e}; nothing was loaded", p.display())))?
+        }
+        None => Module::of_type(chip, kind),
     };
     for s in &a.inputs {
         let (k, v) = kv("input", s)?;
         let l = num("input", s, v)?;
         if !(0..8).contains(&k) || !(0..=1).contains(&l) {
-            return Err(UserError(format!("--input {s}: expected N=LEVEL with N 0..7 and LEVEL 0 or 1")));
+            return Err(UserError(format!("--input {}: expected N=LEVEL with N 0..7 and LEVEL 0 or 1", shown(s))));
         }
         m.io.driven[k as usize] = Some(l == 1);
     }
@@ -162,29 +200,29 @@ fn build_module(a: &ModuleArgs) -> Result<Module<ModelChip>, UserError> {
         let ch = match k {
             0 => 0,
             4 => 1,
-            _ => return Err(UserError(format!("--analog {s}: channel must be 0 or 4"))),
+            _ => return Err(UserError(format!("--analog {}: channel must be 0 or 4", shown(s)))),
         };
         if !(0..=4095).contains(&x) {
-            return Err(UserError(format!("--analog {s}: value must be 0..4095")));
+            return Err(UserError(format!("--analog {}: value must be 0..4095", shown(s))));
         }
         m.io.analog[ch] = x as u16;
     }
     m.io.supply_dv = a.supply;
     for s in &a.left {
         let (k, v) = kv("left-switch", s)?;
-        let x = num("left-switch", s, v)?;
-        m.world.left_at[axis("left-switch", s, k)?] = Some(x as i32);
+        m.world.left[axis(kind, "left-switch", s, k)?] = Some(span("left-switch", s, v, tmcl::io::World::left_end)?);
     }
     for s in &a.right {
         let (k, v) = kv("right-switch", s)?;
-        let x = num("right-switch", s, v)?;
-        m.world.right_at[axis("right-switch", s, k)?] = Some(x as i32);
+        m.world.right[axis(kind, "right-switch", s, k)?] = Some(span("right-switch", s, v, tmcl::io::World::right_end)?);
     }
     for s in &a.home {
         let (k, v) = kv("home-switch", s)?;
-        let (f, t) = v.split_once(':').ok_or_else(|| UserError(format!("--home-switch {s}: expected AXIS=FROM:TO")))?;
-        let (f, t) = (num("home-switch", s, f)?, num("home-switch", s, t)?);
-        m.world.home_window[axis("home-switch", s, k)?] = Some((f as i32, t as i32));
+        if !v.contains(':') {
+            return Err(UserError(format!("--home-switch {}: expected AXIS=FROM:TO", shown(s))));
+        }
+        // FROM:TO (the end-switch form does not apply to a home switch).
+        m.world.home[axis(kind, "home-switch", s, k)?] = Some(span("home-switch", s, v, tmcl::io::World::left_end)?);
     }
     m.update_pins();
     Ok(m)
@@ -212,7 +250,7 @@ fn serve(a: ServeArgs) -> Result<Outcome, UserError> {
 }
 
 fn assemble_file(p: &Path) -> Result<asm::Program, UserError> {
-    let text = std::fs::read_to_string(p).map_err(|e| UserError(format!("{}: cannot read: {e}", p.display())))?;
+    let text = tmc429_model::text::read_file(p).map_err(UserError)?;
     asm::assemble(p, &text, &asm::FileSystem).map_err(|e| UserError(e.to_string()))
 }
 
@@ -223,7 +261,7 @@ fn asm_cmd(a: AsmArgs) -> Result<Outcome, UserError> {
         for i in &prog.code {
             b.extend_from_slice(&i.to_bytes7());
         }
-        std::fs::write(&o, b).map_err(|e| UserError(format!("{}: cannot write: {e}", o.display())))?;
+        super::run::write_atomic(&o, &b)?;
         return Ok(Outcome::Ok);
     }
     let names: std::collections::HashMap<usize, &str> = prog.labels.iter().map(|(n, a)| (*a, n.as_str())).collect();
@@ -256,14 +294,18 @@ fn disasm(a: DisasmArgs) -> Result<Outcome, UserError> {
 }
 
 fn run_prog(a: RunArgs) -> Result<Outcome, UserError> {
-    if !(a.time > 0.0 && a.time.is_finite()) {
-        return Err(UserError(format!("--time must be a positive number of seconds, got {}", a.time)));
-    }
+    let limit = run_time_ms(a.time)?;
     let prog = assemble_file(&a.file)?;
     let mut m = build_module(&a.module)?;
+    // Every instruction must be one the module runs (as a download would check it).
+    for (ins, (file, line)) in prog.code.iter().zip(&prog.lines) {
+        if let Err(e) = m.check_instruction(ins) {
+            let text = asm::format_ins(ins, &|v| v.to_string());
+            return Err(UserError(format!("{file}:{line}: {text}: {e}; the {} cannot run this program", m.kind().name())));
+        }
+    }
     m.load_program(&prog.code).map_err(|e| UserError(format!("{}: {e}", a.file.display())))?;
     m.vm.state = AppState::Run;
-    let limit = (a.time * 1000.0) as u64;
     let mut ms = 0;
     while ms < limit && m.vm.state == AppState::Run {
         m.run_ms(1);
@@ -275,12 +317,26 @@ fn run_prog(a: RunArgs) -> Result<Outcome, UserError> {
     } else {
         let _ = writeln!(out, "stopped after {:.3} s at pc {}", ms as f64 / 1000.0, m.vm.pc);
     }
-    for ax in 0..3 {
+    for ax in 0..m.kind().axes() as u8 {
         let ins = |t| tmcl::Instruction::new(tmcl::proto::op::GAP, t, ax, 0);
         let g = |m: &mut Module<ModelChip>, t| m.execute(&ins(t), tmcl::Origin::Direct).1;
         let (x, v, t) = (g(&mut m, 1), g(&mut m, 3), g(&mut m, 0));
         let _ = writeln!(out, "axis {ax}: actual position {x}, target position {t}, actual speed {v}");
     }
     let _ = writeln!(out, "accumulator {}, X register {}, outputs {:08b}", m.vm.accu, m.vm.x, m.io.outputs);
+    // A store the program made (STAP, STGP, …) that did not reach the file is lost state: exit 2.
+    if let Some(e) = m.eeprom_error.take() {
+        return Err(UserError(format!("EEPROM store failed: {e}; the file is unchanged")));
+    }
     Ok(Outcome::Ok)
+}
+
+/// `--time` in whole module milliseconds (the module runs in 1 ms steps): at least 1 ms, and no
+/// more than a 64-bit count of them (never cut silently).
+fn run_time_ms(seconds: f64) -> Result<u64, UserError> {
+    let ms = (seconds * 1000.0).round();
+    if !(1.0..u64::MAX as f64).contains(&ms) {
+        return Err(UserError(format!("--time {seconds:e}: expected 0.001 .. 1.8e16 seconds (the module runs in 1 ms steps)")));
+    }
+    Ok(ms as u64)
 }

@@ -6,7 +6,7 @@ use tmc429_model::Chip;
 use tmc429_scenario::vectors as svectors;
 use tmc429_testbench::vectors::{self, scenario, Form, Format, Unit};
 
-use super::common::{parse_chip, parse_fclk, read_input};
+use super::common::{parse_chip, parse_fclk, parse_package, read_input};
 use crate::{Outcome, UserError};
 
 #[derive(clap::Args)]
@@ -21,12 +21,19 @@ pub struct Args {
     /// Output directory (created if missing).
     #[arg(long, required_unless_present = "list")]
     pub out: Option<PathBuf>,
-    /// pins (.hex + .cols + .meta), csv (transaction level) or all the unit has.
+    /// pins (.hex + .cols + .meta), csv (transaction level), all (pins and csv, as the unit has
+    /// them), or a form of the chip's pins for testers and simulators: stil (IEEE 1450), evcd
+    /// (extended VCD, $dumpports) or vcd (four-state VCD of the pins).
     #[arg(long, default_value = "all", value_parser = parse_format)]
     pub format: Format,
     /// Chip variant: tmc428, tmc429 (default) or tmc4210. A TOML scenario names its own.
     #[arg(long, value_parser = parse_chip)]
     pub chip: Option<Chip>,
+    /// Package (C90): tmc428 sop24 (default), dil20, ssop16; tmc429 qfn32 (default), sop24,
+    /// ssop16; tmc4210 ssop16. The files get `-PACKAGE` after the chip when it lacks pins of the
+    /// variant. Not for a TOML scenario (it runs in the variant's full package).
+    #[arg(long, value_parser = parse_package)]
+    pub package: Option<tmc429_model::Package>,
     /// CLK frequency in Hz (default: 16 MHz for the TMC428, 32 MHz otherwise). A TOML scenario
     /// names its own.
     #[arg(long, value_parser = parse_fclk)]
@@ -66,12 +73,19 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
     };
     let forms = vectors::forms(a.unit, a.format).map_err(UserError)?;
     if name.ends_with(".toml") {
+        if let Some(p) = a.package {
+            return Err(UserError(format!("--package {p}: a scenario file runs in its variant's full package; leave --package out")));
+        }
         return toml_scenario(&a, Path::new(name), out, &forms);
     }
     let chip = a.chip.unwrap_or(Chip::Tmc429);
+    let package = match a.package {
+        Some(p) => p.check(chip).map_err(|e| UserError(format!("--package: {e}")))?,
+        None => tmc429_model::Package::full(chip),
+    };
     let fclk = a.fclk.unwrap_or_else(|| chip.default_fclk());
     let sck_half = a.sck_half.unwrap_or(scenario::SCK_HALF);
-    let sc = match scenario::builtin(name, chip, fclk, a.seed, a.cycles) {
+    let mut sc = match scenario::builtin(name, chip, fclk, a.seed, a.cycles) {
         Some(sc) => sc,
         None if Path::new(name).is_file() => scenario::from_file(Path::new(name), chip, fclk, sck_half).map_err(UserError)?,
         None => {
@@ -79,6 +93,7 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
             return Err(UserError(format!("--scenario {name}: neither a built-in scenario ({}) nor a readable file", names.join(", "))));
         }
     };
+    sc.package = package;
     std::fs::create_dir_all(out).map_err(|e| UserError(format!("--out {}: cannot create: {e}", out.display())))?;
     let files = vectors::export(a.unit, &sc, &forms, out).map_err(UserError)?;
     for f in files {
