@@ -148,6 +148,22 @@ pub struct Chain {
     pub cs: bool,
     pub sck: bool,
     pub sdo: bool,
+    /// SDI_S readback register (C87): R := R << 1 | SDI_S at each rising SCK_S; 0 after a
+    /// datagram_low/high_word write ([`Chain::clear_readback`]). It survives an en_sd abort.
+    pub readback: u64,
+}
+
+/// The take/return handshake of one chain edge with the register file, which holds the cover
+/// flag cw and the datagram-word flag (C85, C88, C89; the `take`, `ret_cw`, `ret_dgw` outputs of
+/// `rtl/tmc429_chain.v`). `changed`: a pin-relevant chain state changed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Handshake {
+    pub changed: bool,
+    /// A datagram starts: cw and the datagram-word flag are taken (the register file clears them).
+    pub take: bool,
+    /// En_sd abort (C89): a taken cover / datagram-word flag returns to waiting.
+    pub ret_cw: bool,
+    pub ret_dgw: bool,
 }
 
 impl Default for Chain {
@@ -183,30 +199,32 @@ impl Chain {
             cs: false,
             sck: true,
             sdo: true,
+            readback: 0,
         }
     }
 
     /// One CLK edge of the SPI chain (C80–C89). `enabled`: the chip is in SPI mode (TMC428,
-    /// TMC429 with en_sd = 0). `ramp_ticks`: bit m = motor m has a ramp tick this cycle.
-    /// `sdi_s`: the synchronized SDI_S (C4). Returns true when a pin-relevant state changed.
+    /// TMC429 with en_sd = 0). `g`: the global registers of the old state, with the register
+    /// file's cw and datagram-word flags. `ramp_ticks`: bit m = motor m has a ramp tick this
+    /// cycle. `sdi_s`: the synchronized SDI_S (C4). Returns the handshake with the register file;
+    /// the chain changes no state but its own.
     #[allow(clippy::too_many_arguments)]
     #[inline]
     pub fn tick(
         &mut self,
         enabled: bool,
         ram: &[u8; 128],
-        g: &mut Global,
+        g: &Global,
         motors: &[Motor; 3],
         cur: &[CurrentScale; 3],
         ramp_ticks: u8,
         sdi_s: bool,
-    ) -> bool {
+    ) -> Handshake {
         if !enabled {
             if self.state != IDLE || self.cs || self.req || self.stepped != 0 {
-                self.abort(g);
-                return true;
+                return self.abort();
             }
-            return false;
+            return Handshake::default();
         }
         // Requests (C83): a step of any motor, cw, the continuous-update timer.
         let steps = motors[0].step as u8 | (motors[1].step as u8) << 1 | (motors[2].step as u8) << 2;
@@ -216,7 +234,7 @@ impl Chain {
             self.cnt -= 1;
             self.req |= steps != 0 || g.cw;
             self.stepped |= steps;
-            return false;
+            return Handshake::default();
         }
         let mut request = self.req || steps != 0 || g.cw;
         if ramp_ticks != 0 && cont {
@@ -245,7 +263,7 @@ impl Chain {
             LOW => {
                 // Rising SCK_S: the driver samples SDO_S; SDI_S shifts into the readback (C87).
                 self.sck = true;
-                g.readback = ((g.readback << 1) | sdi_s as u64) & MASK48;
+                self.readback = ((self.readback << 1) | sdi_s as u64) & MASK48;
                 self.bits = (self.bits + 1).min(BITS_MAX);
                 self.state = HIGH;
                 self.cnt = timing(g.g(f::CLK2_DIV)).1;
@@ -294,7 +312,14 @@ impl Chain {
             self.req = request;
             self.stepped |= steps;
         }
-        changed
+        Handshake { changed, take: start, ret_cw: false, ret_dgw: false }
+    }
+
+    /// The `readback_clr` input: a µC write of datagram_low_word or datagram_high_word executes
+    /// in this edge, after the chain's edge, so it wins over a shift of the same edge (C3, C87).
+    #[inline]
+    pub fn clear_readback(&mut self) {
+        self.readback = 0;
     }
 
     /// True when the chain only counts down at the coming edge: inside a state with more than
@@ -331,8 +356,9 @@ impl Chain {
     }
 
     /// Starts a datagram (C80): snapshot of the index, current scale, direction and step flag of
-    /// every motor and of the polarities; cover and dgw taken.
-    fn start(&mut self, g: &mut Global, motors: &[Motor; 3], cur: &[CurrentScale; 3]) {
+    /// every motor and of the polarities; cover and dgw taken (the caller clears the register
+    /// file's flags on the returned `take`).
+    fn start(&mut self, g: &Global, motors: &[Motor; 3], cur: &[CurrentScale; 3]) {
         self.snap_pol = Polarity { ph_ab: g.g(f::POL_PH_AB) != 0, fd_ab: g.g(f::POL_FD_AB) != 0, dac_ab: g.g(f::POL_DAC_AB) != 0 };
         let mut dir = 0;
         let mut step = 0;
@@ -347,12 +373,10 @@ impl Chain {
         self.snap_step = step;
         self.stepped = 0;
         self.cover_busy = g.cw;
-        g.cw = false;
         self.cov_pos = g.cover_pos & 63;
         self.cov_len = g.cover_len.min(24);
         self.cov_data = g.cover_datagram & 0xFF_FFFF;
         self.dgw_busy = g.dgw;
-        g.dgw = false;
         self.req = false;
         self.cell = 0;
         self.motor = 0;
@@ -391,13 +415,15 @@ impl Chain {
     }
 
     /// Leaving SPI mode (en_sd := 1, C89): back to IDLE; a cover or readback request in
-    /// progress stays waiting.
-    fn abort(&mut self, g: &mut Global) {
-        g.cw |= self.cover_busy;
-        g.dgw |= self.dgw_busy;
-        let cupd = self.cupd;
+    /// progress returns to waiting (`ret_cw`, `ret_dgw`). The continuous-update counters and
+    /// the readback register keep their values.
+    fn abort(&mut self) -> Handshake {
+        let hs = Handshake { changed: true, take: false, ret_cw: self.cover_busy, ret_dgw: self.dgw_busy };
+        let (cupd, readback) = (self.cupd, self.readback);
         *self = Chain::reset();
         self.cupd = cupd;
+        self.readback = readback;
+        hs
     }
 
     /// The signal vectors (C73) of the snapshot taken at the last datagram start, with the

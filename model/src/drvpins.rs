@@ -70,7 +70,9 @@ impl Tmc429 {
         let mut changed = false;
         if self.chip != Chip::Tmc4210 {
             let sdi = (pins >> sync::bit::SDI_S) & 1 != 0;
-            changed = self.chain.tick(spi, &self.ram, &mut self.global, &self.motors, &self.cur, ramp_ticks, sdi);
+            let hs = self.chain.tick(spi, &self.ram, &self.global, &self.motors, &self.cur, ramp_ticks, sdi);
+            self.global.handshake(&hs);
+            changed = hs.changed;
             if ramp_ticks != 0 {
                 for i in 0..3 {
                     if (ramp_ticks >> i) & 1 != 0 {

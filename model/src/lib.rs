@@ -242,7 +242,7 @@ impl Tmc429 {
         p.chain.bit_count = c.bits;
         p.chain.pending = c.req as u8;
         p.chain.cover_waiting = c.cw(&self.global) as u8;
-        p.chain.readback = self.global.readback;
+        p.chain.readback = c.readback;
         p
     }
 
@@ -341,16 +341,17 @@ impl Tmc429 {
         i
     }
 
-    /// One edge of a copy `c` of the driver chain (with a copy `g` of the global registers) in
-    /// the world of the current state: its RAM, motors, current scales, ramp ticks and SDI_S.
-    /// This is the chain's edge of [`Tmc429::tick`] (C80–C89); nothing happens when powered
-    /// down (C66). Gives the RTL's next-state outputs (`cs_ns`, `take`, ...) for test vectors.
-    pub fn chain_step(&self, c: &mut chain::Chain, g: &mut Global) {
+    /// One edge of a copy `c` of the driver chain in the world of the current state: its global
+    /// registers, RAM, motors, current scales, ramp ticks and SDI_S. This is the chain's edge of
+    /// [`Tmc429::tick`] (C80–C89); nothing happens when powered down (C66). Gives the RTL's
+    /// next-state outputs (`cs_ns`, ...) in `c` and its handshake outputs (`take`, `ret_cw`,
+    /// `ret_dgw`) for test vectors.
+    pub fn chain_step(&self, c: &mut chain::Chain) -> chain::Handshake {
         if self.power_down || self.chip == Chip::Tmc4210 {
-            return;
+            return chain::Handshake::default();
         }
         let i = self.chain_inputs();
-        c.tick(i.spi_mode, &self.ram, g, &self.motors, &self.cur, i.ramp_tick, i.sdi_s);
+        c.tick(i.spi_mode, &self.ram, &self.global, &self.motors, &self.cur, i.ramp_tick, i.sdi_s)
     }
 
     /// One rising edge of CLK (C1).

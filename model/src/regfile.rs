@@ -5,7 +5,7 @@
 use crate::regmap::{self, f, idx, jdx, Addr};
 use crate::{ram, Tmc429, TYPE_VERSION};
 
-/// Global registers and driver-chain state shared by the motors.
+/// Global registers, with the cover and datagram-word flags the driver chain takes and returns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Global {
     /// Global parameter register $7E, as stored (unused bits 0).
@@ -26,13 +26,24 @@ pub struct Global {
     pub cw: bool,
     /// A datagram_low/high_word write waits for the next datagram (C-chain).
     pub dgw: bool,
-    /// 48-bit readback shift register of SDI_S.
-    pub readback: u64,
     /// Switch levels sampled through the 74HC157 when refmux = 1 (bit 2m = Rm, 2m+1 = Lm).
     pub mux_switches: u8,
 }
 
 impl Global {
+    /// The register file's side of the chain's take/return handshake (C85, C88, C89): a
+    /// datagram start clears cw and the datagram-word flag, an en_sd abort sets back the ones
+    /// the datagram had taken.
+    #[inline]
+    pub(crate) fn handshake(&mut self, hs: &crate::chain::Handshake) {
+        if hs.take {
+            self.cw = false;
+            self.dgw = false;
+        }
+        self.cw |= hs.ret_cw;
+        self.dgw |= hs.ret_dgw;
+    }
+
     pub(crate) fn reset() -> Self {
         Global {
             gconf: f::CLK2_DIV.put(15),
@@ -47,7 +58,6 @@ impl Global {
             cover_datagram: 0,
             cw: false,
             dgw: false,
-            readback: 0,
             mux_switches: 0,
         }
     }
@@ -100,8 +110,8 @@ impl Tmc429 {
                 }
             }
             Addr::Global(j) => match j {
-                jdx::DATAGRAM_LOW_WORD => (g.readback & 0xFF_FFFF) as u32,
-                jdx::DATAGRAM_HIGH_WORD => ((g.readback >> 24) & 0xFF_FFFF) as u32,
+                jdx::DATAGRAM_LOW_WORD => (self.chain.readback & 0xFF_FFFF) as u32,
+                jdx::DATAGRAM_HIGH_WORD => ((self.chain.readback >> 24) & 0xFF_FFFF) as u32,
                 jdx::COVER_POS_LEN => {
                     f::COVER_WAITING.put(self.chain.cw(g) as u32)
                         | f::COVER_POS.put((g.cover_pos as u32 + 1) & 63)
@@ -201,7 +211,7 @@ impl Tmc429 {
                 match j {
                     jdx::DATAGRAM_LOW_WORD | jdx::DATAGRAM_HIGH_WORD => {
                         // "A write to one of these read-only registers initializes them" (C87).
-                        g.readback = 0;
+                        self.chain.clear_readback();
                         g.dgw = true;
                     }
                     jdx::COVER_POS_LEN => {

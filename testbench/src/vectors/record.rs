@@ -29,7 +29,7 @@ pub trait Recorder {
 
 // ---- chip pins ---------------------------------------------------------------------------
 
-/// Output pins the reference RTL does not drive: none, the RTL is complete (rtl/README.md)
+/// Output pins the reference RTL does not drive: none, the RTL is complete (docs/rtl.md)
 /// and chip-level vectors compare every pin. A pin listed here would be recorded and left out
 /// of the `.meta` mask (`not_compared`).
 pub const RTL_PENDING_PINS: &[&str] = &[];
@@ -257,13 +257,13 @@ pub fn chain_layout() -> Layout {
     ])
 }
 
-/// The driver-chain master's boundary, one line per CLK edge. The model has neither the RTL's
-/// RAM read port nor its take/return handshake, so this recorder rebuilds them (C80, C88, C89):
-/// `ram_re`/`ram_addr` from the chain state ([`chain::ram_read`]), `ram_q` as the cell the
-/// model's chain read at the last edge with a read (its `cfg` or `lut`), and the next-state
-/// outputs (`*_n`, `take`) by one more edge of a copy of the new chain state with the line's
-/// inputs ([`Tmc429::chain_step`] of the state before the edge): the RTL's combinational
-/// outputs are compared after the edge, with the line's inputs still applied.
+/// The driver-chain master's boundary, one line per CLK edge. The model has no RAM read port,
+/// so this recorder rebuilds it (C80): `ram_re`/`ram_addr` from the chain state
+/// ([`chain::ram_read`]), `ram_q` as the cell the model's chain read at the last edge with a read
+/// (its `cfg` or `lut`). The next-state outputs (`*_n`) and the take/return handshake (`take`,
+/// `ret_cw`, `ret_dgw`, [`chain::Handshake`]) come from one more edge of a copy of the new chain
+/// state with the line's inputs ([`Tmc429::chain_step`] of the state before the edge): the RTL's
+/// combinational outputs are compared after the edge, with the line's inputs still applied.
 pub struct ChainPins {
     w: PinWriter,
     /// The chip before the next edge, and the chain inputs it presents.
@@ -288,11 +288,10 @@ impl ChainPins {
         clk2_div_w: Option<u8>,
         new: &chain::Chain,
         d: &chain::Chain,
-        readback: u64,
+        hs: chain::Handshake,
     ) -> Result<(), String> {
         let rd = if i.run && i.spi_mode { chain::ram_read(new, ram_q) } else { None };
-        let abort = i.run && !i.spi_mode && (new.state != chain::IDLE || new.cs || new.req || new.stepped != 0);
-        let take = d.state == chain::SETUP && new.state != chain::SETUP;
+        let take = hs.take;
         let tri = |a: [u8; 3], w: u32| (a[2] as u64) << (2 * w) | (a[1] as u64) << w | a[0] as u64;
         let v = [
             rst as u64,
@@ -321,11 +320,11 @@ impl ChainPins {
             rd.is_some() as u64,
             rd.map_or(0, |(c, _)| c as u64),
             take as u64,
-            (abort && new.cover_busy) as u64,
-            (abort && new.dgw_busy) as u64,
+            hs.ret_cw as u64,
+            hs.ret_dgw as u64,
             new.cover_busy as u64,
             new.dgw_busy as u64,
-            readback,
+            new.readback,
             new.cs as u64,
             new.sck as u64,
             new.sdo as u64,
@@ -348,7 +347,7 @@ impl ChainPins {
 impl Recorder for ChainPins {
     fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
         let c = *chip.chain();
-        self.line(true, &Default::default(), &Default::default(), 0, None, &c, &c, chip.global().readback)?;
+        self.line(true, &Default::default(), &Default::default(), 0, None, &c, &c, chain::Handshake::default())?;
         self.pre = Some(Box::new(chip.clone()));
         self.pre_i = chip.chain_inputs();
         self.ram_q = 0;
@@ -359,14 +358,13 @@ impl Recorder for ChainPins {
         let i = self.pre_i;
         let new = *chip.chain();
         let mut d = new;
-        let mut g = *pre.global();
-        pre.chain_step(&mut d, &mut g);
+        let hs = pre.chain_step(&mut d);
         let q = self.ram_q;
         let post_i = chip.chain_inputs();
         // the timing registers load when clk2_div changes (a write of the same value is no change)
         let w = (post_i.clk2_div != i.clk2_div).then_some(post_i.clk2_div);
         // ramp_tick_nx, cont_update_nx: the inputs of the next edge (the RTL registers them)
-        self.line(false, &i, &post_i, q, w, &new, &d, chip.global().readback)?;
+        self.line(false, &i, &post_i, q, w, &new, &d, hs)?;
         if i.run && i.spi_mode {
             if let Some((_, cfg)) = chain::ram_read(pre.chain(), q) {
                 self.ram_q = if cfg { new.cfg } else { new.lut };
