@@ -357,24 +357,34 @@ impl Tmc429 {
     /// One rising edge of CLK (C1).
     #[inline]
     pub fn tick(&mut self, inp: &Inputs) -> Outputs {
-        if self.bond.refr_absent != 0 {
-            // The package lacks REFR pins: the die sees their pull-ups (C90).
-            let bonded = self.bond.inputs(inp);
-            return self.tick_die(&bonded);
-        }
-        self.tick_die(inp)
+        self.tick_pins(sync::pack(inp))
     }
 
+    /// One rising edge of CLK with the input pins as one word ([`sync::pack`], bit positions
+    /// [`sync::bit`]): [`Tmc429::tick`] for a caller that holds the pins packed, e.g. a run
+    /// whose inputs stay the same for many edges.
     #[inline]
-    fn tick_die(&mut self, inp: &Inputs) -> Outputs {
-        if self.idle_edge(inp) {
+    pub fn tick_pins(&mut self, pins: u16) -> Outputs {
+        self.tick_changes(pins).unwrap_or(self.out)
+    }
+
+    /// One rising edge like [`Tmc429::tick_pins`]; `None` for an edge of the fast path, which
+    /// changes nothing a watcher of the chip sees: the output pins, INT, the motors' registers
+    /// and every register the µC reads stay as after the previous edge (only the cycle count,
+    /// the pre-divider and the driver chain's inner counter advance). A run that decodes pin
+    /// events or gathers motor statistics can skip such an edge.
+    #[inline]
+    pub fn tick_changes(&mut self, pins: u16) -> Option<Outputs> {
+        // A package without REFR pins: the die sees their pull-ups (C90).
+        let pins = pins | (self.bond.refr_absent as u16) << sync::bit::REFR1;
+        if self.idle_edge(pins) {
             self.cycle += 1;
             self.run_edges += 1;
             self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
             self.chain.count_down();
-            return self.out;
+            return None;
         }
-        self.full_tick(inp)
+        Some(self.full_tick(pins))
     }
 
     /// Fast path, exactly equivalent to the full edge (tests/fast_path.rs): the pins are settled
@@ -382,13 +392,13 @@ impl Tmc429 {
     /// and this phase of the frame has nothing to do: no snapshot that changes a target, no ramp
     /// tick, no pulse tick that adds to an accumulator. Then the edge only advances the counters.
     #[inline]
-    fn idle_edge(&self, inp: &Inputs) -> bool {
+    fn idle_edge(&self, pins: u16) -> bool {
         if !(self.fast_path
             && self.quiet
             && !self.power_down
             && self.drivers_quiet()
             && self.sync.settled()
-            && sync::pack(inp) == self.sync.s1
+            && pins == self.sync.s1
             && (self.sync.s2, self.global.mux_switches) == self.quiet_pins)
         {
             return false;
@@ -415,7 +425,7 @@ impl Tmc429 {
         self.quiet = false;
     }
 
-    fn full_tick(&mut self, inp: &Inputs) -> Outputs {
+    fn full_tick(&mut self, inp_pins: u16) -> Outputs {
         self.cycle += 1;
         // Every unit reads the old state; the synchronizers shift last.
         let pins = self.sync.s2;
@@ -484,7 +494,7 @@ impl Tmc429 {
             self.power_down = false;
         }
 
-        self.sync.shift(sync::pack(inp));
+        self.sync.shift(inp_pins);
 
         // Registered outputs.
         let sdo = self.spi.sdo();

@@ -176,16 +176,6 @@ impl Bonding {
         *self == Bonding::default()
     }
 
-    /// The levels the die sees for the pins `i` (absent REFR inputs pulled up).
-    #[inline]
-    pub fn inputs(&self, i: &Inputs) -> Inputs {
-        let mut b = *i;
-        b.refr1 |= self.refr_absent & 1 != 0;
-        b.refr2 |= self.refr_absent & 2 != 0;
-        b.refr3 |= self.refr_absent & 4 != 0;
-        b
-    }
-
     /// Ties off the outputs the package lacks.
     #[inline]
     pub fn outputs(&self, o: &mut Outputs) {

@@ -1,5 +1,6 @@
 //! The fast paths of `Tmc429::tick` change nothing: a chip with them and one without, fed the
-//! same pins, agree on every output and probe in every cycle.
+//! same pins, agree on every output and probe in every cycle; and an edge `Tmc429::tick_changes`
+//! reports as quiet changes no pin, no INT and no probe but the pre-divider.
 
 mod common;
 use common::*;
@@ -55,11 +56,31 @@ proptest! {
         }
         let mut slow = Tmc429::new(chip);
         slow.set_fast_path(false);
+        // The same pins packed, through `tick_changes`: `None` only for an edge that changes no
+        // pin, no INT and no probe but the pre-divider.
+        let mut packed = Tmc429::new(chip);
+        let (mut last, mut last_probes) = (packed.outputs(), packed.probes());
+        let mut quiet = 0;
         for (n, (i, o, pr)) in trace.lock().unwrap().iter().enumerate() {
             let so = slow.tick(i);
             prop_assert_eq!(so, *o, "outputs differ at cycle {}", n);
             prop_assert_eq!(slow.probes(), *pr, "probes differ at cycle {}", n);
+            let int_before = packed.int();
+            match packed.tick_changes(tmc429_model::sync::pack(i)) {
+                Some(po) => prop_assert_eq!(po, so, "tick_changes outputs differ at cycle {}", n),
+                None => {
+                    quiet += 1;
+                    prop_assert_eq!(packed.outputs(), last, "a quiet edge changed a pin at cycle {}", n);
+                    prop_assert_eq!(packed.int(), int_before, "a quiet edge changed INT at cycle {}", n);
+                    let mut p = packed.probes();
+                    p.prescaler = last_probes.prescaler;
+                    prop_assert_eq!(p, last_probes, "a quiet edge changed a probe at cycle {}", n);
+                }
+            }
+            prop_assert_eq!(packed.probes(), *pr, "tick_changes probes differ at cycle {}", n);
+            (last, last_probes) = (packed.outputs(), packed.probes());
         }
+        prop_assert!(quiet > 0, "no quiet edge in {} cycles", trace.lock().unwrap().len());
     }
 }
 
