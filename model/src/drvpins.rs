@@ -3,7 +3,7 @@
 //! TMC429 §8.2, §10, §11; docs/model-contract.md C70–C99).
 
 use crate::regmap::f;
-use crate::{chain, current, stepdir, sync, Chip, Tmc429, PHASE_RAMP};
+use crate::{chain, current, schedule, stepdir, sync, Chip, Tmc429};
 
 /// Driver side: microstep unit, current scaling, SPI chain and Step/Dir (C70–C99).
 impl Tmc429 {
@@ -24,12 +24,10 @@ impl Tmc429 {
             if !quiet {
                 return false;
             }
-            if self.prescaler & 31 == PHASE_RAMP {
-                let frame = self.prescaler >> 5;
+            if schedule::phase(self.prescaler) == schedule::PHASE_RAMP {
                 let cont = self.spi_mode() && self.global.g(f::CONT_UPDATE) != 0;
                 for (m, cs) in self.motors.iter().zip(self.cur.iter()) {
-                    let mask = (1u32 << m.ramp_div) - 1;
-                    if frame & mask == mask && (cont || !cs.tick_changes_nothing(m)) {
+                    if schedule::due(self.prescaler, m.ramp_div) && (cont || !cs.tick_changes_nothing(m)) {
                         return false;
                     }
                 }
@@ -58,14 +56,7 @@ impl Tmc429 {
     /// Returns true when a driver-side pin may have changed.
     #[inline]
     pub(crate) fn drivers(&mut self, pins: u16) -> bool {
-        let mut ramp_ticks = 0u8;
-        if self.prescaler & 31 == PHASE_RAMP {
-            let frame = self.prescaler >> 5;
-            for (i, m) in self.motors.iter().enumerate() {
-                let mask = (1u32 << m.ramp_div) - 1;
-                ramp_ticks |= (((frame & mask) == mask) as u8) << i;
-            }
-        }
+        let ramp_ticks = schedule::ramp_ticks(self.prescaler, &self.motors);
         let spi = self.spi_mode();
         let mut changed = false;
         if self.chip != Chip::Tmc4210 {

@@ -21,12 +21,14 @@ pub mod regmap;
 pub mod regmap_render;
 pub mod regmap_sigrok;
 pub mod regmap_verilog;
+pub mod schedule;
 pub mod script;
 pub mod spi_slave;
 pub mod stepdir;
 pub mod switches;
 pub mod sync;
 pub mod text;
+pub mod vtarget;
 
 pub use chip::{Chip, Package};
 pub use pins::{Bonding, ChainProbe, Inputs, MotorProbe, Outputs, Probes};
@@ -37,16 +39,7 @@ use regmap::{f, Addr};
 use spi_slave::{SpiEvent, SpiSlave};
 use sync::SyncBank;
 
-/// Width of the pre-divider counter C (C40): 5 phase bits + 15 frame bits cover every
-/// pulse_div and ramp_div.
-pub const PRESCALER_BITS: u32 = 20;
-const PRESCALER_MASK: u32 = (1 << PRESCALER_BITS) - 1;
-
-/// Phases of the 32-cycle frame (C41): target snapshot of motor m, commit of all targets.
-pub const PHASE_SNAPSHOT: [u32; 3] = [0, 7, 14];
-pub const PHASE_COMMIT: u32 = 29;
-pub const PHASE_RAMP: u32 = 30;
-pub const PHASE_PULSE: u32 = 31;
+pub use schedule::{PHASE_COMMIT, PHASE_PULSE, PHASE_RAMP, PHASE_SNAPSHOT, PRESCALER_BITS};
 
 /// type_version of the TMC429 and TMC4210 (TMC429 §8.2.4.4).
 pub const TYPE_VERSION: u32 = 0x429101;
@@ -261,9 +254,6 @@ impl Tmc429 {
     /// that edge this is the boundary of `rtl/tmc429_ramp.v` (test vectors, docs/vectors.md).
     pub fn ramp_inputs(&self, m: usize) -> ramp::RampInputs {
         let mo = &self.motors[m];
-        let phase = self.prescaler & 31;
-        let frame = self.prescaler >> 5;
-        let due = |div: u8| frame & ((1 << div) - 1) == (1 << div) - 1;
         let (left, right) = self.switches();
         let (we, widx, wdata) = match self.write_of_next_edge() {
             Some((Addr::Motor(mm, idx), d)) if mm as usize == m => (true, idx, d),
@@ -271,8 +261,8 @@ impl Tmc429 {
         };
         ramp::RampInputs {
             run: !self.power_down,
-            ramp_tick: phase == PHASE_RAMP && due(mo.ramp_div),
-            pulse_tick: phase == PHASE_PULSE && due(mo.pulse_div),
+            ramp_tick: schedule::ramp_tick(self.prescaler, mo.ramp_div),
+            pulse_tick: schedule::pulse_tick(self.prescaler, mo.pulse_div),
             rm: mo.rm,
             x_target: mo.x_target,
             v_min: mo.v_min,
@@ -323,15 +313,9 @@ impl Tmc429 {
             cover_datagram: g.cover_datagram & 0xFF_FFFF,
             sdi_s: (self.sync.s2 >> sync::bit::SDI_S) & 1 != 0,
             clk2_div: g.g(f::CLK2_DIV) as u8,
+            ramp_tick: schedule::ramp_ticks(self.prescaler, &self.motors),
             ..Default::default()
         };
-        if self.prescaler & 31 == PHASE_RAMP {
-            let frame = self.prescaler >> 5;
-            for (m, mo) in self.motors.iter().enumerate() {
-                let mask = (1u32 << mo.ramp_div) - 1;
-                i.ramp_tick |= (((frame & mask) == mask) as u8) << m;
-            }
-        }
         for (m, mo) in self.motors.iter().enumerate() {
             i.step |= (mo.step as u8) << m;
             i.dir |= (mo.dir as u8) << m;
@@ -380,7 +364,7 @@ impl Tmc429 {
         if self.idle_edge(pins) {
             self.cycle += 1;
             self.run_edges += 1;
-            self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
+            self.prescaler = schedule::next(self.prescaler);
             self.chain.count_down();
             return None;
         }
@@ -403,18 +387,12 @@ impl Tmc429 {
         {
             return false;
         }
-        let phase = self.prescaler & 31;
-        let frame = self.prescaler >> 5;
+        let c = self.prescaler;
         let n = self.motor_count();
-        let due = |div: u8| frame & ((1 << div) - 1) == (1 << div) - 1;
-        match phase {
-            PHASE_RAMP => !self.motors[..n].iter().any(|m| m.rm != HOLD_MODE && due(m.ramp_div)),
-            PHASE_PULSE => !self.motors[..n].iter().any(|m| due(m.pulse_div) && m.v.unsigned_abs() >= 256),
-            PHASE_COMMIT => self.motors[..n].iter().all(|m| m.vt_next == m.vt),
-            p => match PHASE_SNAPSHOT.iter().position(|&s| s == p) {
-                Some(i) if i < n => self.motors[i].target_velocity() == self.motors[i].vt_next,
-                _ => true,
-            },
+        match schedule::phase(c) {
+            PHASE_RAMP => !self.motors[..n].iter().any(|m| m.rm != HOLD_MODE && schedule::due(c, m.ramp_div)),
+            PHASE_PULSE => !self.motors[..n].iter().any(|m| schedule::due(c, m.pulse_div) && m.v.unsigned_abs() >= 256),
+            p => vtarget::quiet(&self.motors, n, p),
         }
     }
 
@@ -457,7 +435,7 @@ impl Tmc429 {
         if !self.power_down {
             self.run_edges += 1;
             pins_changed |= self.drivers(pins);
-            let phase = self.prescaler & 31;
+            let phase = schedule::phase(self.prescaler);
             let event_phase = PHASE_SNAPSHOT.contains(&phase) || phase >= PHASE_COMMIT;
             let inputs = (pins, self.global.mux_switches);
             if event_phase || !self.quiet || inputs != self.quiet_pins || !self.fast_path {
@@ -468,7 +446,7 @@ impl Tmc429 {
             }
             pc_event = match_old && !self.global.pc_match_prev;
             self.global.pc_match_prev = match_old;
-            self.prescaler = (self.prescaler + 1) & PRESCALER_MASK;
+            self.prescaler = schedule::next(self.prescaler);
         }
 
         if let Some(d) = exec {
@@ -526,22 +504,15 @@ impl Tmc429 {
     /// The motion core for one cycle (C40–C63), from the old state: the frame schedule of the
     /// target velocities (C41) and each motor's ramp and pulse generator ([`ramp::edge`]).
     fn motion(&mut self, pins: u16, events: &mut [u8; 3]) {
-        let phase = self.prescaler & 31;
-        let frame = self.prescaler >> 5;
-        let due = |div: u8| frame & ((1 << div) - 1) == (1 << div) - 1;
+        let c = self.prescaler;
         let (left, right) = switches::levels(self.chip, &self.global, pins);
         let n = self.motor_count();
         for (i, m) in self.motors.iter_mut().enumerate().take(n) {
-            // Target snapshot (C41): computed from the old state, in use from the commit on.
+            // The ramp and pulse generator uses the committed target of the old state (C41).
             let vt = m.vt;
-            if phase == PHASE_SNAPSHOT[i] {
-                m.vt_next = m.target_velocity();
-            }
-            if phase == PHASE_COMMIT {
-                m.vt = m.vt_next;
-            }
-            let ramp_tick = phase == PHASE_RAMP && due(m.ramp_div);
-            let pulse_tick = phase == PHASE_PULSE && due(m.pulse_div);
+            vtarget::edge(m, i, schedule::phase(c));
+            let ramp_tick = schedule::ramp_tick(c, m.ramp_div);
+            let pulse_tick = schedule::pulse_tick(c, m.pulse_div);
             events[i] = ramp::edge(m, vt, ramp_tick, pulse_tick, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
         }
     }

@@ -25,10 +25,10 @@ pub const INT_STOP_RIGHT_HIGH: u8 = 128;
 
 /// Largest magnitude of the internal velocity: 11 integer + 8 fraction bits.
 pub const V_MAG_MAX: i32 = (1 << 19) - 1;
-/// |dx| limit of the ramp generator (TMC428 §8.7.1).
-pub const DX_LIMIT: u32 = (1 << 19) - 1;
 
 pub(crate) const MASK24: u32 = 0xFF_FFFF;
+
+pub use crate::vtarget::{braking_velocity, isqrt, DX_LIMIT};
 
 /// Sign-extends a 24-bit value.
 #[inline]
@@ -40,40 +40,6 @@ pub fn sext24(v: u32) -> i32 {
 #[inline]
 pub fn sext12(v: u32) -> i32 {
     ((v << 20) as i32) >> 20
-}
-
-/// Integer square root (floor).
-#[inline]
-pub fn isqrt(n: u64) -> u64 {
-    if n == 0 {
-        return 0;
-    }
-    let mut r = (n as f64).sqrt() as u64;
-    while r * r > n {
-        r -= 1;
-    }
-    while (r + 1) * (r + 1) <= n {
-        r += 1;
-    }
-    r
-}
-
-/// The RAMP_MODE braking law (C50): the largest velocity from which the motor still comes
-/// down to v_min without passing the target, `(isqrt(Y) − h) >> 2` (0 below h) with
-/// Y = (p_mul·(|dx|−1)·2^12) >> pdiv and h = ⌈a_max/128⌉ when ramp_div ≥ pulse_div, else 0.
-///
-/// √Y is 4·√(2048·p·(|dx|−1)), p = p_mul/2^(3+pdiv) (TMC429 §8.1.10): 4 times the velocity from which
-/// the continuous deceleration p stands for ends at rest one step before the target (the step
-/// of margin is the pulse accumulator's phase). The chip's velocity changes only at ramp
-/// ticks, by a = a_max/256 each (TMC429 §8.1.10.2), and holds for the 2^(ramp_div −
-/// pulse_div) pulse ticks between them; braking from v in those steps covers up to
-/// (v + a/2)²/(2048·p) steps, so the law aims a/2 lower: isqrt(Y) is that velocity to a
-/// quarter, and h = ⌈a_max/128⌉ is 4·a/2 rounded up. With ramp_div < pulse_div no correction
-/// is needed (h = 0: the law is isqrt(Y >> 4)). `adx` is |dx| limited to 2^19 − 1 (C43), ≥ 1.
-pub fn braking_velocity(p_mul: u32, pdiv: u8, adx: u32, a_max: u16, pulse_div: u8, ramp_div: u8) -> u32 {
-    let y = ((p_mul as u64) * (adx as u64 - 1)) << 12 >> pdiv;
-    let h = if ramp_div >= pulse_div { (a_max as u32).div_ceil(128) } else { 0 };
-    (isqrt(y) as u32).saturating_sub(h) >> 2
 }
 
 /// Registers and internal state of one motor. Field names are the datasheet's.
@@ -190,44 +156,6 @@ impl Motor {
             -((-self.v) >> 8)
         } else {
             self.v >> 8
-        }
-    }
-
-    /// Target velocity of the current mode (C50), from the current state.
-    pub fn target_velocity(&self) -> i32 {
-        let p_mul = 128 + (self.pmul & 0x7F) as u64;
-        let v_min = self.v_min as i64;
-        let v_max = self.v_max as i64;
-        let clamp = |v: i64| -> i64 { v.max(v_min).min(v_max) };
-        match self.rm {
-            RAMP_MODE | SOFT_MODE => {
-                let dx = self.dx();
-                if dx == 0 {
-                    return 0;
-                }
-                let adx = (dx.unsigned_abs()).min(DX_LIMIT) as u64;
-                let mag = if self.rm == RAMP_MODE {
-                    braking_velocity(p_mul as u32, self.pdiv, adx as u32, self.a_max, self.pulse_div, self.ramp_div) as i64
-                } else {
-                    ((p_mul * adx) >> (3 + self.pdiv as u32)) as i64
-                };
-                let v = clamp(mag) as i32;
-                if dx < 0 {
-                    -v
-                } else {
-                    v
-                }
-            }
-            VELOCITY_MODE => {
-                let vt = sext12(self.v_target as u32).max(-2047);
-                let mag = (vt.unsigned_abs() as i64).min(v_max) as i32;
-                if vt < 0 {
-                    -mag
-                } else {
-                    mag
-                }
-            }
-            _ => 0,
         }
     }
 

@@ -12,7 +12,7 @@ use tmc429_model::microstep;
 use tmc429_model::motor::{self, sext24};
 use tmc429_model::ramp;
 use tmc429_model::regmap::{self, Addr};
-use tmc429_model::{chain, script, Chip, Inputs, Outputs, Tmc429, PHASE_RAMP};
+use tmc429_model::{chain, schedule, script, Chip, Inputs, Outputs, Tmc429};
 
 use super::files::AtomicFile;
 use super::pins::{input, output, Layout, LineEncoder, Meta, PinWriter};
@@ -686,13 +686,11 @@ impl RampCsv {
     fn plan(&mut self, chip: &Tmc429) {
         let c = chip.probes().prescaler;
         self.due = 0;
-        if chip.is_powered_down() || c & 31 != PHASE_RAMP {
+        if chip.is_powered_down() {
             return;
         }
-        let frame = c >> 5;
         for m in 0..chip.motor_count() {
-            let mask = (1u32 << chip.motor(m).ramp_div) - 1;
-            if frame & mask == mask {
+            if schedule::ramp_tick(c, chip.motor(m).ramp_div) {
                 self.due |= 1 << m;
             }
         }
