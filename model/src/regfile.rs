@@ -24,7 +24,7 @@ pub struct Global {
     pub cover_datagram: u32,
     /// Cover datagram waiting (cw).
     pub cw: bool,
-    /// A datagram_low/high_word write waits for the next datagram (C-chain).
+    /// A datagram_low/high_word write waits for the next datagram (C88).
     pub dgw: bool,
     /// Switch levels sampled through the 74HC157 when refmux = 1 (bit 2m = Rm, 2m+1 = Lm).
     pub mux_switches: u8,
