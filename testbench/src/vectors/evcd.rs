@@ -11,7 +11,6 @@
 //! the chip starts driving it), chip side `L` `H` (driven), `T` (high impedance) and `X`
 //! (unknown). Strengths are 6 (strong) for a driven level, 0 0 for high impedance.
 
-use std::io::Write;
 use std::path::Path;
 
 use super::files::AtomicFile;
@@ -238,16 +237,7 @@ impl ChipDump {
 
     fn next(&mut self) -> Result<(), String> {
         self.line += 1;
-        if self.buf.len() >= 1 << 16 {
-            self.flush()?;
-        }
-        Ok(())
-    }
-
-    fn flush(&mut self) -> Result<(), String> {
-        let r = self.file.file().write_all(&self.buf);
-        self.buf.clear();
-        r.map_err(|e| self.file.error(e))
+        self.file.drain(&mut self.buf, 1 << 16)
     }
 }
 
@@ -261,7 +251,7 @@ impl PinForm for ChipDump {
         let t = self.line * self.timing.period;
         self.time(t);
         self.set(CLK, b'D');
-        self.flush()?;
+        self.file.drain(&mut self.buf, 0)?;
         Ok(self.file)
     }
 }

@@ -97,6 +97,18 @@ impl AtomicFile {
         r.map_err(|e| self.error(e))
     }
 
+    /// Writes out and empties `buf`, a writer's own encoding buffer, once it holds at least
+    /// `at_least` bytes (0: now).
+    #[inline]
+    pub fn drain(&mut self, buf: &mut Vec<u8>, at_least: usize) -> Result<(), String> {
+        if buf.len() < at_least {
+            return Ok(());
+        }
+        let r = self.write_all(buf);
+        buf.clear();
+        r
+    }
+
     fn close(&mut self) -> Result<(), String> {
         let f = self.file.take().expect("file open until commit");
         let r = f.into_inner().map_err(|e| e.into_error());

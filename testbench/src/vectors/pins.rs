@@ -11,7 +11,6 @@
 //! Columns whose name begins with `_` are framing, not ports.
 
 use std::fmt::Write as _;
-use std::io::Write;
 
 use super::files::AtomicFile;
 
@@ -259,24 +258,14 @@ impl PinWriter {
     pub fn line(&mut self, values: &[u64]) -> Result<(), String> {
         self.enc.encode(values, &mut self.buf);
         self.lines += 1;
-        if self.buf.len() >= 1 << 16 {
-            self.flush()?;
-        }
-        Ok(())
-    }
-
-    fn flush(&mut self) -> Result<(), String> {
-        let r = self.hex.file().write_all(&self.buf).map_err(|e| self.hex.error(e));
-        self.buf.clear();
-        r
+        self.hex.drain(&mut self.buf, 1 << 16)
     }
 
     /// Appends `n` lines already encoded with a [`LineEncoder`] of the same layout.
     pub fn encoded_lines(&mut self, bytes: &[u8], n: u64) -> Result<(), String> {
-        self.flush()?;
+        self.hex.drain(&mut self.buf, 0)?;
         self.lines += n;
-        let r = self.hex.file().write_all(bytes);
-        r.map_err(|e| self.hex.error(e))
+        self.hex.write_all(bytes)
     }
 
     pub fn lines(&self) -> u64 {
@@ -286,7 +275,7 @@ impl PinWriter {
     /// Writes `.cols` and `.meta` (with the line count) and returns the three files, still
     /// temporary; the caller commits them.
     pub fn finish(mut self, mut meta: Meta) -> Result<Vec<AtomicFile>, String> {
-        self.flush()?;
+        self.hex.drain(&mut self.buf, 0)?;
         meta.cycles = self.lines;
         let stem = self.hex.path().with_extension("");
         let mut cols = AtomicFile::create(&stem.with_extension("cols"))?;

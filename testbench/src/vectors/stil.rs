@@ -15,7 +15,6 @@
 //! The file is written as the model runs (no buffering of the whole set) under a temporary
 //! name that becomes the final one when complete.
 
-use std::io::Write;
 use std::path::Path;
 
 use super::files::AtomicFile;
@@ -155,16 +154,7 @@ impl ChipStil {
         self.buf.extend_from_slice(PREFIX);
         self.buf.extend(self.states.iter().map(|s| wfc(*s)));
         self.buf.extend_from_slice(SUFFIX);
-        if self.buf.len() >= 1 << 16 {
-            self.flush()?;
-        }
-        Ok(())
-    }
-
-    fn flush(&mut self) -> Result<(), String> {
-        let r = self.file.file().write_all(&self.buf);
-        self.buf.clear();
-        r.map_err(|e| self.file.error(e))
+        self.file.drain(&mut self.buf, 1 << 16)
     }
 }
 
@@ -175,7 +165,7 @@ impl PinForm for ChipStil {
     }
     fn close(mut self) -> Result<AtomicFile, String> {
         self.buf.extend_from_slice(b"}\n");
-        self.flush()?;
+        self.file.drain(&mut self.buf, 0)?;
         Ok(self.file)
     }
 }
