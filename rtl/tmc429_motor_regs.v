@@ -27,9 +27,15 @@ module tmc429_motor_regs #(
     output wire [23:0] rdata,
     input  wire        sw_l,      // mapped left switch (C60)
     input  wire        sw_r,      // mapped right switch
-    input  wire        ramp_tick, // phase 30 of a ramp frame (C40, C41)
-    input  wire        pulse_tick,// phase 31 of a pulse frame
+    input  wire        ramp_tick, // ramp phase of a ramp frame (C40, C41)
+    input  wire        pulse_tick,// pulse phase of a pulse frame
     input  wire [11:0] vt,        // committed target velocity (C41)
+    // the ramp tick's operands and results (tmc429_accel, shared by the motors)
+    output reg  [10:0] a_max,
+    output wire        stop_soft,
+    input  wire [19:0] v_rmp,
+    input  wire [11:0] a_rmp,
+    input  wire        mc_rmp,
     output wire        xeqt,      // x_actual == x_target
     output wire        irq,       // interrupt flags != 0
     // registers for the target velocity unit and the frame schedule
@@ -51,7 +57,7 @@ module tmc429_motor_regs #(
     // a_threshold at their TMC429_F_* bits)
     output reg  [23:0] drv_conf
 );
-    reg [10:0] v_min, a_max;
+    reg [10:0] v_min;
     reg [2:0]  usrs;
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
@@ -69,11 +75,13 @@ module tmc429_motor_regs #(
     // ---- ramp and pulse generator, switch stop, latch ------------------------------------
     tmc429_ramp #(.HAS_USTEP(HAS_USTEP)) u_ramp (
         .clk(clk), .rst(rst), .run(run), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
-        .rm(rm), .x_target(x_target), .v_min(v_min), .a_max(a_max), .ref_conf(ref_conf),
+        .rm(rm), .x_target(x_target), .v_min(v_min), .ref_conf(ref_conf),
         .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .tol_k(tol_k), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
+        .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
         .we(we), .widx(widx), .wdata(wdata),
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
+        .stop_soft(stop_soft),
         .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .v_actual(v_actual));
 
     // ---- interrupt conditions (C63), from the old state -------------------------------

@@ -13,8 +13,9 @@
 //   stop flops     stop_hard := at_stop (RAMP/SOFT, x_actual = x_target, |V|>>8 <= v_min, C52)
 //                  | (stop & !SOFT_STOP); stop_soft := stop & SOFT_STOP (C61): the conditions
 //                  of this cycle act in the next one
-//   ramp tick      (ramp_tick, rm != HOLD) V moves toward T = 256*vt (0 while stop_soft) by
-//                  at most a_max; a_actual := change of V; RAMP/SOFT: v_target := vt (C51)
+//   ramp tick      (ramp_tick, rm != HOLD) V, a_actual := the results of tmc429_accel, which
+//                  moves V toward T = 256*vt (0 while stop_soft) by at most a_max, shared by
+//                  the three motors; RAMP/SOFT: v_target := vt (C51)
 //   V := 0         while stop_hard; wins over the ramp tick (C3)
 //   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is one
 //                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
@@ -30,13 +31,12 @@ module tmc429_ramp #(
     input  wire        clk,
     input  wire        rst,
     input  wire        run,        // 0 while powered down (C66)
-    input  wire        ramp_tick,  // phase 30 of a ramp frame of this motor (C40, C41)
-    input  wire        pulse_tick, // phase 31 of a pulse frame of this motor
+    input  wire        ramp_tick,  // phase 16 + 7m of a ramp frame of this motor m (C40, C41)
+    input  wire        pulse_tick, // phase 17 + 7m of a pulse frame of this motor
     // registers of the motor (old state)
     input  wire [1:0]  rm,
     input  wire [23:0] x_target,
     input  wire [10:0] v_min,
-    input  wire [10:0] a_max,
     input  wire [3:0]  ref_conf,   // REF_RnL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L
     input  wire [2:0]  usrs,
     input  wire [11:0] dx_ref_tolerance,
@@ -44,6 +44,10 @@ module tmc429_ramp #(
     input  wire [11:0] vt,         // committed target velocity (tmc429_vtarget)
     input  wire        sw_l,       // left and right switch (C60)
     input  wire        sw_r,
+    // the ramp tick's results (tmc429_accel, from this motor's operands in its ramp tick)
+    input  wire [19:0] v_rmp,
+    input  wire [11:0] a_rmp,
+    input  wire        mc_rmp,
     // µC write to this motor (executed in this edge)
     input  wire        we,
     input  wire [3:0]  widx,
@@ -59,6 +63,7 @@ module tmc429_ramp #(
     output reg         dir,        // direction of the last step (1 = negative)
     output reg  [23:0] x_latched,
     output reg         lp,
+    output reg         stop_soft,  // registered soft stop action (C61), an operand of the tick
     // conditions of the old state
     output wire        xeqt,       // x_actual == x_target
     output wire        stop,       // switch stop condition (STOP interrupt, C63)
@@ -66,8 +71,7 @@ module tmc429_ramp #(
     output wire [11:0] v_actual    // readout sign(V) * (|V| >> 8) (C42)
 );
     reg ref_prev;
-    reg stop_hard;                   // registered stop actions (C52, C61)
-    reg stop_soft;
+    reg stop_hard;                   // registered hard stop action (C52, C61)
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -115,37 +119,8 @@ module tmc429_ramp #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire at_stop  = ~rm[1] & xeqt & ~m_cmp[12];
 
-    // ---- ramp tick (C51) -------------------------------------------------------------------------
-    // T = 256 vt, or 0 while stop_soft (a flop: T is selected first). up = V < T; lands on T
-    // when |T - V| <= a_max, i.e. V + a_max - T >= 0 and T + a_max - V >= 0: the step sums
-    // V +- a_max (21 bits, no wrap-around) minus / from T, each one sign test; else V +- a_max;
-    // a_actual = the change of V (T - V when landing).
-    // Range: |V|, |T| <= 2047*256, a_max <= 2047. V - T and V + a_max - T >= -2*2047*256 fit in
-    // 21 bits; a sum above 2^20 - 1 (wrapping to a negative sign) needs |T - V| > 2^20 - 2^11,
-    // and then the other sum is negative anyway, so `land` is exact.
-    wire [11:0] t_hi  = stop_soft ? 12'd0 : vt;
-    wire [20:0] t_w   = {t_hi[11], t_hi, 8'd0};
-    wire [20:0] v_w   = {v[19], v};
-    wire [19:0] v_up  = v + {9'd0, a_max};     // used only short of T: within +-2047*256
-    wire [19:0] v_dn  = v - {9'd0, a_max};
-    /* verilator lint_off UNUSEDSIGNAL */     // only the signs are used
-    wire [20:0] s_vt  = v_w - t_w;                                      // V - T
-    wire [20:0] s_lo  = v_w + {10'd0, a_max} - t_w;                     // V + a_max - T
-    wire [20:0] s_hi  = t_w + {10'd0, a_max} - v_w;                     // T + a_max - V
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire        up    = s_vt[20];
-    wire        land  = ~s_lo[20] & ~s_hi[20];
-    wire [11:0] d_lo  = {t_hi[3:0], 8'd0} - v[11:0];                    // T - V, bits 11..0
-    wire [11:0] a_neg = 12'd0 - {1'b0, a_max};
-    wire [19:0] v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
-    // the change of V: d when landing, else the step
-    wire [11:0] a_rmp = land ? d_lo : (up ? {1'b0, a_max} : a_neg);
+    // ---- ramp tick (C51): the results of tmc429_accel ------------------------------------
     wire        tick  = ramp_tick & (rm != 2'd3);
-    // v_mc of the new V: V + a_max (V - a_max) has low byte 0 iff V's low byte is -a_max
-    // (a_max) mod 256; landed on T = 256 vt, it is T's sign
-    wire        mc_up = v_up[19] & (v[7:0] == (8'd0 - a_max[7:0]));
-    wire        mc_dn = v_dn[19] & (v[7:0] == a_max[7:0]);
-    wire        mc_rmp = land ? t_hi[11] : (up ? mc_up : mc_dn);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
     // acc + (|V| >> 8): v_mc (a flip-flop) enters as the carry into bit 1 (bit 0 adds v_mc

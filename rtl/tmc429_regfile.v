@@ -50,7 +50,7 @@ module tmc429_regfile #(
     output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
     output wire [8:0]  drv_ifconf_nx,
     output wire [71:0] drv_conf,       // motor m in [24m+23:24m]: its current_scaling
-    output wire [2:0]  drv_ramp_tick,  // phase 30 of a ramp frame of motor m (not gated by run)
+    output wire [2:0]  drv_ramp_tick,  // phase 16 + 7m of a ramp frame of motor m (not gated by run)
     output wire [2:0]  drv_ramp_tick_nx, // drv_ramp_tick of the next edge (its register's input)
     output wire        drv_cw,         // cover datagram waiting
     output wire        drv_dgw,        // datagram-word write waiting
@@ -118,10 +118,11 @@ module tmc429_regfile #(
         .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
 
     // ---- frame schedule (C40, C41) ----------------------------------------------------
-    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. The ticks
-    // are registers formed one edge ahead: the phase after this edge is p + run, the frame
-    // does not change from phase 29 to 30 or 30 to 31 (nor while powered down), and the
-    // divider after this edge is the one a µC write of clk_config in this edge stores.
+    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. Motor m's
+    // ramp tick is at phase 16 + 7m, its pulse tick at 17 + 7m. The ticks are registers formed
+    // one edge ahead: the phase after this edge is p + run, the frame changes only from phase
+    // 31 to 0 (and not while powered down), and the divider after this edge is the one a µC
+    // write of clk_config in this edge stores.
     wire [14:0] frame = prescaler[19:5];
     reg  [3:0]  ones_d;
     integer k;
@@ -135,8 +136,6 @@ module tmc429_regfile #(
     // start. The ticks include run of the edge after (powered down the core has no tick).
     wire [4:0] ph      = prescaler[4:0];
     wire pd_nx       = (wr_g & (jdx == `TMC429_JDX_POWER_DOWN)) | (pd & ~frame_start);
-    wire ph_ramp_nx  = ~pd_nx & (run ? (ph == 5'd29) : (ph == 5'd30));
-    wire ph_pulse_nx = ~pd_nx & (run ? (ph == 5'd30) : (ph == 5'd31));
 
     // ---- read address decode (C10) ---------------------------------------------------------
     // The address is complete in the SPI input register from the edge after the 7th bit, and
@@ -174,6 +173,11 @@ module tmc429_regfile #(
     wire [11:0] m_pulse_div, m_ramp_div;
     wire [14:0] m_brake_h;
     wire [35:0] m_vt;
+    wire [32:0] m_a_max;
+    wire [2:0]  m_stop_soft;
+    wire [19:0] v_rmp;
+    wire [11:0] a_rmp;
+    wire        mc_rmp;
     reg  [2:0]  ramp_tick, pulse_tick;
     wire [2:0]  ramp_tick_nx;
     assign drv_ramp_tick = ramp_tick;
@@ -187,6 +191,9 @@ module tmc429_regfile #(
             wire w_div = we_m & (jdx == `TMC429_IDX_CLK_CONFIG);
             wire [3:0] rdiv_nx = w_div ? wdata[`TMC429_F_RAMP_DIV] : m_ramp_div[4*g+3:4*g];
             wire [3:0] pdiv_nx = w_div ? wdata[`TMC429_F_PULSE_DIV] : m_pulse_div[4*g+3:4*g];
+            localparam [4:0] PH_RAMP = 5'd16 + 5'd7 * g;
+            wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
+            wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_RAMP) : (ph == PH_RAMP + 5'd1));
             assign ramp_tick_nx[g] = ph_ramp_nx & (ones_d >= rdiv_nx);
             always @(posedge clk) begin
                 if (rst) begin
@@ -205,6 +212,8 @@ module tmc429_regfile #(
                 .ramp_tick(ramp_tick[g]),
                 .pulse_tick(pulse_tick[g]),
                 .vt(m_vt[12*g+11:12*g]),
+                .a_max(m_a_max[11*g+10:11*g]), .stop_soft(m_stop_soft[g]),
+                .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
                 .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
@@ -216,6 +225,13 @@ module tmc429_regfile #(
                 .drv_conf(drv_conf[24*g+23:24*g]));
         end
     endgenerate
+
+    // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
+    // C51), selected by the motors' ramp ticks
+    tmc429_accel #(.NMOT(NMOT)) u_accel (
+        .sel(ramp_tick),
+        .v(p_v), .vt(m_vt), .stop_soft(m_stop_soft), .a_max(m_a_max),
+        .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
 
     // ---- target velocity (C41, C50) -------------------------------------------------------
     tmc429_vtarget #(.NMOT(NMOT)) u_vt (

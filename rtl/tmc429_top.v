@@ -164,7 +164,7 @@ module tmc429_top #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire       sd_nx    = (CHIP != 0) & ifconf_nx[`TMC429_F_EN_SD];
 
-    // ramp ticks (C40): phase 30 of the frames whose low ramp_div bits are all 1, from the
+    // ramp ticks (C40, C41): phase 16 + 7m of the frames whose low ramp_div bits are all 1, from the
     // frame schedule of the register file (the motors' own ramp ticks)
     wire [2:0]  ramp_tick = rtick;      // 0 while powered down
 

@@ -13,13 +13,10 @@
 //                 out of acc
 //   p = 7m+14     C: RAMP_MODE: v = (q - h) >> 2 with q the root and h = ⌈a_max/128⌉ when
 //                 ramp_div >= pulse_div (the velocity held between ramp ticks, C50), clamp to
-//                 [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign, result into
-//                 vt_next[m]
-//   p = 29        commit: vt[m] := vt_next[m] for all motors (vt is used from phase 30 on);
-//                 motor 2's result is still the output of C at p = 29 (B and C hold after
-//                 p = 27), so it is committed from there and needs no vt_next register
-// Motor 2's result is ready at p = 28 and committed from C at p = 29. Stages A, B and C work on three motors at once
-// (A on m+1 while B runs m): each stage reads the other's registers from the old state.
+//                 [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign; commit in
+//                 the same edge: vt[m] := the result (used from phase 7m+15 on)
+// Stages A, B and C work on three motors at once (A on m+1 while B runs m): each stage reads
+// the other's registers from the old state.
 //
 // Square root: with t = pdiv >> 1, e = pdiv & 1, u = 1 - e and acc = c * (p_mul << u),
 // Y = floor(acc * 2^11 / 4^t) (acc * 2^11 = p_mul * (|dx|-1) * 2^(12-e)). A root of 2^14
@@ -63,17 +60,18 @@ module tmc429_vtarget #(
     // ---- schedule ----------------------------------------------------------------------
     // decoded from the phase after each edge (p + run) into registers, so that every stage
     // starts at a flip-flop
-    reg        a_snap, a_c, a_mul, b_load, b_run, c_out, commit;
+    reg        a_snap, a_c, a_mul, b_load, b_run;
     reg [1:0]  a_m;
-    reg        c_m;                // motor of C's result: 0 or 1 (motor 2: committed from C)
+    reg [2:0]  c_out;             // commit of motor m's result (one-hot)
     reg [2:0]  b_k;               // B cycle index 0..6
-    reg        n_a_snap, n_a_c, n_a_mul, n_b_load, n_b_run, n_c_out, n_commit, n_c_m;
+    reg        n_a_snap, n_a_c, n_a_mul, n_b_load, n_b_run;
+    reg [2:0]  n_c_out;
     reg [1:0]  n_a_m;
     reg [2:0]  n_b_k;
     wire [4:0] phase_nx = phase + {4'd0, run};
     always @(*) begin
         n_a_snap = 1'b0; n_a_c = 1'b0; n_a_mul = 1'b0; n_b_load = 1'b0; n_b_run = 1'b0;
-        n_c_out = 1'b0; n_commit = 1'b0; n_a_m = 2'd0; n_c_m = 1'b0; n_b_k = 3'd0;
+        n_c_out = 3'd0; n_a_m = 2'd0; n_b_k = 3'd0;
         case (phase_nx)
         5'd0:  begin n_a_snap = 1'b1; n_a_m = 2'd0; end
         5'd7:  begin n_a_snap = 1'b1; n_a_m = 2'd1; end
@@ -94,9 +92,9 @@ module tmc429_vtarget #(
         default: ;
         endcase
         case (phase_nx)
-        5'd14: begin n_c_out = 1'b1; n_c_m = 1'b0; end
-        5'd21: begin n_c_out = 1'b1; n_c_m = 1'b1; end
-        5'd29: n_commit = 1'b1;
+        5'd14: n_c_out = 3'b001;
+        5'd21: n_c_out = 3'b010;
+        5'd28: n_c_out = 3'b100;
         default: ;
         endcase
     end
@@ -104,11 +102,10 @@ module tmc429_vtarget #(
         if (rst) begin
             // phase 0 after reset
             a_snap <= 1'b1; a_c <= 1'b0; a_mul <= 1'b0; b_load <= 1'b0; b_run <= 1'b0;
-            c_out <= 1'b0; commit <= 1'b0; a_m <= 2'd0; c_m <= 1'b0; b_k <= 3'd0;
+            c_out <= 3'd0; a_m <= 2'd0; b_k <= 3'd0;
         end else begin
             a_snap <= n_a_snap; a_c <= n_a_c; a_mul <= n_a_mul; b_load <= n_b_load;
-            b_run <= n_b_run; c_out <= n_c_out; commit <= n_commit; a_m <= n_a_m;
-            c_m <= n_c_m; b_k <= n_b_k;
+            b_run <= n_b_run; c_out <= n_c_out; a_m <= n_a_m; b_k <= n_b_k;
         end
     end
 
@@ -330,7 +327,7 @@ module tmc429_vtarget #(
     // The clamp min(max(v, lo), v_max) on q = 4·v + h (RAMP_MODE: q = isqrt(16·X), v =
     // (q - h) >> 2, 0 below h; SOFT and VELOCITY: q = 4·mag, h = 0): both comparisons of q
     // against the bounds formed at the load, the subtraction beside them (C50); the sign is
-    // applied at the commit (vt_next holds sign and magnitude), so that no negation follows
+    // applied at the commit (res holds sign and magnitude), so that no negation follows
     wire        c_vel  = b_rm == 2'd2;
     wire        c_ramp = b_rm == 2'd0;
     wire        y_sat  = sticky | (~b_odd & y[11]);
@@ -354,23 +351,17 @@ module tmc429_vtarget #(
         sm2c = sm[11] ? (12'd0 - {1'b0, sm[10:0]}) : {1'b0, sm[10:0]};
     endfunction
 
-    reg [23:0] vt_next;           // motor m (0, 1) in [12m+11:12m], sign and magnitude
     reg [35:0] vt_r;
     wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
+    wire [35:0] res_c   = {3{sm2c(res)}} & present;
+    integer     k;
     always @(posedge clk) begin
         if (rst) begin
-            vt_next <= 24'd0;
             vt_r <= 36'd0;
         end else if (run) begin
-            if (c_out) begin
-                if (c_m)
-                    vt_next[23:12] <= res;
-                else
-                    vt_next[11:0] <= res;
-            end
-            if (commit)
-                vt_r <= {sm2c(res), sm2c(vt_next[23:12]), sm2c(vt_next[11:0])}
-                        & present;
+            for (k = 0; k < 3; k = k + 1)
+                if (c_out[k])
+                    vt_r[12*k +: 12] <= res_c[12*k +: 12];
         end
     end
 

@@ -269,17 +269,18 @@ fn demo_on_the_model() {
     assert!(out.contains("motor 2 latched the switch position: motor 2 x_latched = -300 (read) at 25 ms\n"), "{out}");
     check_demo_outputs(&d, false, &out);
     // the vectors: the last ramp tick of each motor (cycle, motor, mode, x_target, x_actual,
-    // v_internal …) at rest on its target, and one CSV row per driver-chain datagram counted
+    // v_internal …) at rest on its target, in the motor's ramp phase 16 + 7m (C41: the cycle
+    // after an edge of phase p is 32·k + p + 1), and one CSV row per driver-chain datagram counted
     let ramp = std::fs::read_to_string(d.join("ramp-demo-tmc429.csv")).unwrap();
     for (m, want) in
-        [(0, "1919999,0,RAMP,-300,-300,0,0,0,0,0"), (1, "1919999,1,SOFT,600,600,0,0,0,0,0"), (2, "1919999,2,RAMP,300,300,0,0,0,0,0")]
+        [(0, "1919985,0,RAMP,-300,-300,0,0,0,0,0"), (1, "1919992,1,SOFT,600,600,0,0,0,0,0"), (2, "1919999,2,RAMP,300,300,0,0,0,0,0")]
     {
         let last = ramp.lines().filter(|l| l.split(',').nth(1) == Some(&m.to_string())).last().unwrap();
         assert_eq!(last, want);
     }
     let chain = std::fs::read_to_string(d.join("chain-demo-tmc429.csv")).unwrap();
-    assert!(out.contains("datagrams:    1156 (driver chain)\n"), "{out}");
-    assert_eq!(chain.lines().count(), 1 + 1156);
+    assert!(out.contains("datagrams:    1175 (driver chain)\n"), "{out}");
+    assert_eq!(chain.lines().count(), 1 + 1175);
     // the model-side VCD: motor 2's latch is armed and REF3 closes at the latched position
     let mut w = wellen::simple::read(d.join("demo.vcd")).unwrap();
     let h = w.hierarchy();

@@ -132,7 +132,9 @@ fn events_in_cycle_order() {
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     let out = text(&o.stdout);
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(&lines[..3], ["260 15000000", "chain 12479 36 87F87F87F", "chain 23391 36 87F87F87F"], "{out}");
+    // Motor 2's request, then motor 1's 341 ramp ticks later, in its ramp phase 7 cycles earlier
+    // (C41, C83): 341 · 32 − 7 = 10905 CLK.
+    assert_eq!(&lines[..3], ["260 15000000", "chain 12479 36 87F87F87F", "chain 23384 36 87F87F87F"], "{out}");
     // POS_END unmasked, x_target away and back: INT rises after the frame that returns, and falls
     // after the frame that clears the flag.
     let int_lines: Vec<&str> = lines.iter().copied().filter(|l| l.starts_with("int ")).collect();

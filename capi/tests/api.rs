@@ -304,7 +304,8 @@ fn drain_all(h: u64) -> Vec<tmc429_event_t> {
 /// Driver-chain datagrams through the C queue: continuous update with the TMC429's power-on
 /// chain configuration sends the 36-bit datagram $87F87F87F (TMC429 §11.4.2 configuration, §11.5 LUT); the requests of
 /// the three motors come 341 ramp ticks apart (C83: reset offsets 0, 341, 682 of a 1024-tick
-/// counter), 341 · 32 = 10912 CLK at ramp_div 0.
+/// counter: motor 2 first, then 1, then 0), each motor's ramp phase 7 before the last one's (C41):
+/// 341 · 32 − 7 = 10905 CLK at ramp_div 0.
 #[test]
 fn chain_events_through_the_queue() {
     let h = create(TMC429_CHIP_TMC429, 0);
@@ -317,8 +318,8 @@ fn chain_events_through_the_queue() {
         assert_eq!(e.kind, TMC429_EVENT_CHAIN);
         assert_eq!((e.nbits, e.bits), (36, 0x8_7F87_F87F));
     }
-    assert_eq!(ev[1].cycle - ev[0].cycle, 10912);
-    assert_eq!(ev[2].cycle - ev[1].cycle, 10912);
+    assert_eq!(ev[1].cycle - ev[0].cycle, 10905);
+    assert_eq!(ev[2].cycle - ev[1].cycle, 10905);
     let line = format_event(&ev[0]);
     assert_eq!(line, format!("chain {} 36 87F87F87F", ev[0].cycle));
     tmc429_destroy(h);

@@ -24,12 +24,11 @@ impl Tmc429 {
             if !quiet {
                 return false;
             }
-            if schedule::phase(self.prescaler) == schedule::PHASE_RAMP {
+            if let Some(i) = schedule::lane_of(&schedule::PHASE_RAMP, schedule::phase(self.prescaler)) {
                 let cont = self.spi_mode() && self.global.g(f::CONT_UPDATE) != 0;
-                for (m, cs) in self.motors.iter().zip(self.cur.iter()) {
-                    if schedule::due(self.prescaler, m.ramp_div) && (cont || !cs.tick_changes_nothing(m)) {
-                        return false;
-                    }
+                let (m, cs) = (&self.motors[i], &self.cur[i]);
+                if schedule::due(self.prescaler, m.ramp_div) && (cont || !cs.tick_changes_nothing(m)) {
+                    return false;
                 }
             }
         }

@@ -4,6 +4,7 @@
 //! executable definition of the chip: the RTL in `rtl/` matches it cycle for cycle, pins and
 //! [`Probes`] alike.
 
+pub mod accel;
 pub mod chain;
 pub mod chip;
 pub mod current;
@@ -261,8 +262,8 @@ impl Tmc429 {
         };
         ramp::RampInputs {
             run: !self.power_down,
-            ramp_tick: schedule::ramp_tick(self.prescaler, mo.ramp_div),
-            pulse_tick: schedule::pulse_tick(self.prescaler, mo.pulse_div),
+            ramp_tick: schedule::ramp_tick(self.prescaler, m, mo.ramp_div),
+            pulse_tick: schedule::pulse_tick(self.prescaler, m, mo.pulse_div),
             rm: mo.rm,
             x_target: mo.x_target,
             v_min: mo.v_min,
@@ -389,11 +390,16 @@ impl Tmc429 {
         }
         let c = self.prescaler;
         let n = self.motor_count();
-        match schedule::phase(c) {
-            PHASE_RAMP => !self.motors[..n].iter().any(|m| m.rm != HOLD_MODE && schedule::due(c, m.ramp_div)),
-            PHASE_PULSE => !self.motors[..n].iter().any(|m| schedule::due(c, m.pulse_div) && m.v.unsigned_abs() >= 256),
-            p => vtarget::quiet(&self.motors, n, p),
-        }
+        let p = schedule::phase(c);
+        let ramp = match schedule::lane_of(&PHASE_RAMP, p) {
+            Some(i) if i < n => self.motors[i].rm == HOLD_MODE || !schedule::due(c, self.motors[i].ramp_div),
+            _ => true,
+        };
+        let pulse = match schedule::lane_of(&PHASE_PULSE, p) {
+            Some(i) if i < n => !schedule::due(c, self.motors[i].pulse_div) || self.motors[i].v.unsigned_abs() < 256,
+            _ => true,
+        };
+        ramp && pulse && vtarget::quiet(&self.motors, n, p)
     }
 
     /// Disables the fast paths of [`Tmc429::tick`] (for the test that proves them equivalent).
@@ -436,7 +442,7 @@ impl Tmc429 {
             self.run_edges += 1;
             pins_changed |= self.drivers(pins);
             let phase = schedule::phase(self.prescaler);
-            let event_phase = PHASE_SNAPSHOT.contains(&phase) || phase >= PHASE_COMMIT;
+            let event_phase = schedule::SLOT_PHASES >> phase & 1 != 0;
             let inputs = (pins, self.global.mux_switches);
             if event_phase || !self.quiet || inputs != self.quiet_pins || !self.fast_path {
                 let before = self.motors;
@@ -511,8 +517,8 @@ impl Tmc429 {
             // The ramp and pulse generator uses the committed target of the old state (C41).
             let vt = m.vt;
             vtarget::edge(m, i, schedule::phase(c));
-            let ramp_tick = schedule::ramp_tick(c, m.ramp_div);
-            let pulse_tick = schedule::pulse_tick(c, m.pulse_div);
+            let ramp_tick = schedule::ramp_tick(c, i, m.ramp_div);
+            let pulse_tick = schedule::pulse_tick(c, i, m.pulse_div);
             events[i] = ramp::edge(m, vt, ramp_tick, pulse_tick, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
         }
     }

@@ -78,7 +78,7 @@ pub struct Motor {
     pub v: i32,
     /// Target velocity in use (C41, C50), integer units: the last committed snapshot.
     pub vt: i32,
-    /// Target velocity of this frame's snapshot, committed to `vt` at phase 29 (C41).
+    /// Target velocity of this frame's snapshot, committed to `vt` at the motor's commit phase (C41).
     pub vt_next: i32,
     /// Pulse accumulator (11 bit).
     pub acc: u16,
@@ -156,17 +156,6 @@ impl Motor {
             -((-self.v) >> 8)
         } else {
             self.v >> 8
-        }
-    }
-
-    /// V after a ramp tick toward target T (1/256 units), a_max per tick (C51).
-    #[inline]
-    pub fn approach(v: i32, t: i32, a_max: u16) -> i32 {
-        let a = a_max as i32;
-        if v < t {
-            (v + a).min(t)
-        } else {
-            (v - a).max(t)
         }
     }
 

@@ -3,13 +3,15 @@
 //! TMC429 §8.1; docs/model-contract.md C42–C44, C51–C54, C61–C63, C3), with its port-level
 //! boundary for test vectors.
 
+use crate::accel;
 use crate::motor::*;
 
 /// One edge of motor `m`'s ramp and pulse generator from the old state (C1): the interrupt
 /// conditions and their rising edges (C63, returned), the latch (C62), the registered stop
 /// actions (C52, C61), the ramp tick (C51, with `ramp_tick` in any mode; HOLD_MODE makes
 /// none) and the pulse tick (C53). `vt` is the committed target velocity of the old state
-/// (C41), `l` and `r` the motor's switches after mapping (C60).
+/// (C41), `l` and `r` the motor's switches after mapping (C60). The ramp tick's arithmetic is
+/// [`accel::tick`] (`rtl/tmc429_accel.v`, shared by the three motors).
 #[inline]
 pub fn edge(m: &mut Motor, vt: i32, ramp_tick: bool, pulse_tick: bool, l: bool, r: bool) -> u8 {
     let sel = if m.ref_conf & REF_RNL != 0 { r } else { l };
@@ -45,9 +47,9 @@ pub fn edge(m: &mut Motor, vt: i32, ramp_tick: bool, pulse_tick: bool, l: bool, 
     m.stop_hard = stop_at_target || (stop && !soft);
     m.stop_soft = stop && soft;
     if ramp_tick && m.rm != HOLD_MODE {
-        let t = if stop_soft { 0 } else { vt * 256 };
-        let v_new = Motor::approach(v_old, t, m.a_max);
-        m.a_actual = v_new - v_old;
+        // The arithmetic is the unit shared by the motors' staggered ticks (C41).
+        let (v_new, a_actual) = accel::tick(v_old, vt, stop_soft, m.a_max);
+        m.a_actual = a_actual;
         m.v = v_new;
         if m.rm <= SOFT_MODE {
             m.v_target = (vt as u32 & 0xFFF) as u16;
@@ -91,9 +93,11 @@ pub fn switch_stop(x_actual: u32, v: i32, vt: i32, ref_conf: u8, dx_ref_toleranc
 pub struct RampInputs {
     /// The motion core runs (not powered down, C66).
     pub run: bool,
-    /// Phase 30 of a frame F with F mod 2^ramp_div = 2^ramp_div − 1 (C40, C41); any ramp mode.
+    /// The motor's ramp phase 7·m + 16 of a frame F with F mod 2^ramp_div = 2^ramp_div − 1 (C40,
+    /// C41); any ramp mode.
     pub ramp_tick: bool,
-    /// Phase 31 of a frame F with F mod 2^pulse_div = 2^pulse_div − 1 (C53).
+    /// The motor's pulse phase 7·m + 17 of a frame F with F mod 2^pulse_div = 2^pulse_div − 1
+    /// (C41, C53).
     pub pulse_tick: bool,
     pub rm: u8,
     pub x_target: u32,

@@ -10,12 +10,20 @@ use crate::motor::Motor;
 pub const PRESCALER_BITS: u32 = 20;
 pub(crate) const PRESCALER_MASK: u32 = (1 << PRESCALER_BITS) - 1;
 
-/// Phases of the 32-cycle frame (C41): target snapshot of motor m, commit of all targets,
-/// ramp tick, pulse tick.
+/// Phases of the 32-cycle frame (C41), motor m's lane 7·m after motor 0's: target snapshot,
+/// commit of that target, ramp tick, pulse tick.
 pub const PHASE_SNAPSHOT: [u32; 3] = [0, 7, 14];
-pub const PHASE_COMMIT: u32 = 29;
-pub const PHASE_RAMP: u32 = 30;
-pub const PHASE_PULSE: u32 = 31;
+pub const PHASE_COMMIT: [u32; 3] = [14, 21, 28];
+pub const PHASE_RAMP: [u32; 3] = [16, 23, 30];
+pub const PHASE_PULSE: [u32; 3] = [17, 24, 31];
+
+/// The phases in which some motor's snapshot, commit, ramp tick or pulse tick falls, bit p =
+/// phase p: in the other phases the motion core only follows its switches and writes.
+pub const SLOT_PHASES: u32 = lane_mask(&PHASE_SNAPSHOT) | lane_mask(&PHASE_COMMIT) | lane_mask(&PHASE_RAMP) | lane_mask(&PHASE_PULSE);
+
+const fn lane_mask(p: &[u32; 3]) -> u32 {
+    1 << p[0] | 1 << p[1] | 1 << p[2]
+}
 
 /// The phase of the pre-divider value `c`: its low 5 bits.
 #[inline]
@@ -30,25 +38,32 @@ pub fn due(c: u32, div: u8) -> bool {
     (c >> 5) & mask == mask
 }
 
-/// The edge of `c` is a ramp tick of a motor with `ramp_div` (phase 30 of a due frame).
+/// The edge of `c` is a ramp tick of motor `m` with `ramp_div` (its ramp phase of a due frame).
 #[inline]
-pub fn ramp_tick(c: u32, ramp_div: u8) -> bool {
-    phase(c) == PHASE_RAMP && due(c, ramp_div)
+pub fn ramp_tick(c: u32, m: usize, ramp_div: u8) -> bool {
+    phase(c) == PHASE_RAMP[m] && due(c, ramp_div)
 }
 
-/// The edge of `c` is a pulse tick of a motor with `pulse_div` (phase 31 of a due frame).
+/// The edge of `c` is a pulse tick of motor `m` with `pulse_div` (its pulse phase of a due
+/// frame).
 #[inline]
-pub fn pulse_tick(c: u32, pulse_div: u8) -> bool {
-    phase(c) == PHASE_PULSE && due(c, pulse_div)
+pub fn pulse_tick(c: u32, m: usize, pulse_div: u8) -> bool {
+    phase(c) == PHASE_PULSE[m] && due(c, pulse_div)
 }
 
-/// The ramp ticks of the edge of `c`, bit m = motor m.
+/// The motor whose lane has `phase` as its slot in `lane` (one of the `PHASE_*` arrays).
+#[inline]
+pub fn lane_of(lane: &[u32; 3], phase: u32) -> Option<usize> {
+    lane.iter().position(|&p| p == phase)
+}
+
+/// The ramp ticks of the edge of `c`, bit m = motor m (at most one motor per edge).
 #[inline]
 pub fn ramp_ticks(c: u32, motors: &[Motor; 3]) -> u8 {
-    if phase(c) != PHASE_RAMP {
-        return 0;
+    match lane_of(&PHASE_RAMP, phase(c)) {
+        Some(m) => (due(c, motors[m].ramp_div) as u8) << m,
+        None => 0,
     }
-    motors.iter().enumerate().fold(0, |t, (m, mo)| t | (due(c, mo.ramp_div) as u8) << m)
 }
 
 /// The pre-divider after one running edge.

@@ -3,7 +3,7 @@
 //! (TMC428 §8.7–§8.11, TMC429 §8.1.10; docs/model-contract.md C41, C43, C50).
 
 use crate::motor::*;
-use crate::schedule::{PHASE_COMMIT, PHASE_SNAPSHOT};
+use crate::schedule::{lane_of, PHASE_COMMIT, PHASE_SNAPSHOT};
 
 /// |dx| limit of the ramp generator (TMC428 §8.7.1).
 pub const DX_LIMIT: u32 = (1 << 19) - 1;
@@ -83,14 +83,14 @@ impl Motor {
 }
 
 /// The target-velocity edge of motor `m` (slot `slot`) at `phase` (C41): the snapshot at its
-/// phase computes `vt_next` from the old state; the commit makes it the `vt` the ramp and pulse
+/// phase computes `vt_next` from the old state; its commit makes it the `vt` the ramp and pulse
 /// generator use from the next edge on.
 #[inline]
 pub(crate) fn edge(m: &mut Motor, slot: usize, phase: u32) {
     if phase == PHASE_SNAPSHOT[slot] {
         m.vt_next = m.target_velocity();
     }
-    if phase == PHASE_COMMIT {
+    if phase == PHASE_COMMIT[slot] {
         m.vt = m.vt_next;
     }
 }
@@ -99,11 +99,13 @@ pub(crate) fn edge(m: &mut Motor, slot: usize, phase: u32) {
 /// new target, no commit a new `vt`.
 #[inline]
 pub(crate) fn quiet(motors: &[Motor; 3], n: usize, phase: u32) -> bool {
-    if phase == PHASE_COMMIT {
-        return motors[..n].iter().all(|m| m.vt_next == m.vt);
-    }
-    match PHASE_SNAPSHOT.iter().position(|&s| s == phase) {
-        Some(i) if i < n => motors[i].target_velocity() == motors[i].vt_next,
+    let commit = match lane_of(&PHASE_COMMIT, phase) {
+        Some(i) if i < n => motors[i].vt_next == motors[i].vt,
         _ => true,
-    }
+    };
+    commit
+        && match lane_of(&PHASE_SNAPSHOT, phase) {
+            Some(i) if i < n => motors[i].target_velocity() == motors[i].vt_next,
+            _ => true,
+        }
 }

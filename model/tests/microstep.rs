@@ -155,14 +155,15 @@ fn datagram_at_edge(is: u32, target: u64) -> (u64, u64) {
 }
 
 /// TMC428 §8.9: is_v0 only after 255 ramp ticks at rest (t = 255·32·2^ramp_div CLK). From
-/// power-on the 255th ramp tick of ramp_div 0 is edge 8159, so a datagram starting at edge 8160
-/// is the first with is_v0 (C75, C77).
+/// power-on motor 0's ramp ticks of ramp_div 0 are at phase 16 (C41), edges 32·k + 17 counted
+/// from 1: the 255th is edge 8145, so a datagram starting at edge 8146 is the first with is_v0
+/// (C75, C77).
 #[test]
 fn is_v0_after_255_ramp_ticks() {
     // is_agtat = is_aleat = %111 (7/8), is_v0 = %001 (1/8).
     let is = 7 << 20 | 7 << 16 | 1 << 12;
-    assert_eq!(datagram_at_edge(is, 8159), (8159, 0x87B));
-    assert_eq!(datagram_at_edge(is, 8160), (8160, 0x863));
+    assert_eq!(datagram_at_edge(is, 8145), (8145, 0x87B));
+    assert_eq!(datagram_at_edge(is, 8146), (8146, 0x863));
 }
 
 /// TMC429 §8.1.9, footnote *2 of the current scale selection scheme: "For selection of current

@@ -84,7 +84,7 @@ fn soft_mode_ends_on_target() {
     assert_eq!(h.chip().motor(0).v, 0);
 }
 
-/// C52: the stop at target is registered. The step onto x_target (phase 31) makes the condition
+/// C52: the stop at target is registered. The step onto x_target (motor 0's pulse phase 17) makes the condition
 /// true in the old state of the next edge, which sets stop_hard and leaves V as it is; V := 0
 /// one edge later, and no further step follows.
 #[test]
@@ -102,7 +102,10 @@ fn stop_at_target_acts_one_edge_later() {
         assert!(edges < 2_000_000, "the move ends");
     }
     let m = *c.motor(0);
-    assert!(m.step && c.probes().prescaler & 31 == 0, "the step onto the target is made at phase 31");
+    assert!(
+        m.step && c.probes().prescaler & 31 == tmc429_model::PHASE_PULSE[0] + 1,
+        "the step onto the target is made at motor 0's pulse phase"
+    );
     assert!(m.v != 0 && m.v.unsigned_abs() >> 8 <= 2, "arrives at |v| <= v_min = 2, V moving: {}", m.v);
     assert!(!m.stop_hard);
     c.tick(&idle);

@@ -143,7 +143,7 @@ proptest! {
                 let expect = if prev < goal { (prev + a_max as i32).min(goal) } else { (prev - a_max as i32).max(goal) };
                 prop_assert_eq!(v, expect);
                 // Ramp ticks only.
-                prop_assert_eq!(c.probes().prescaler & 31, 31, "change outside phase 30");
+                prop_assert_eq!(c.probes().prescaler & 31, tmc429_model::PHASE_RAMP[0] + 1, "change outside motor 0's ramp phase");
             }
             prev = v;
         }

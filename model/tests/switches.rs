@@ -274,9 +274,9 @@ fn right_switch_interrupts() {
     assert_eq!(rd(&mut h, 0, INTERRUPT), 0xF020, "STOP_RIGHT_LOW");
 }
 
-/// C41 with C61: a snapshot acts only from the commit at phase 29 on. Motor at V = 0 (a_max 0)
+/// C41 with C61: a snapshot acts only from its commit (motor 0: phase 14) on. Motor at V = 0 (a_max 0)
 /// on an active left switch in VELOCITY_MODE: a negative v_target makes vt < 0, which starts a
-/// stop condition — at the ramp-tick edge after the commit, not the cycle after the snapshot.
+/// stop condition — in the edge after the commit, not the cycle after the snapshot.
 #[test]
 fn target_snapshot_acts_from_the_commit() {
     use tmc429_model::{Inputs, Tmc429, PHASE_COMMIT, PHASE_SNAPSHOT};
@@ -299,14 +299,14 @@ fn target_snapshot_acts_from_the_commit() {
     assert_eq!((m.vt, m.vt_next, m.int_flags & INT_STOP), (0, 0, 0));
     c.tick(&inp); // snapshot edge
     assert_eq!((c.motor(0).vt, c.motor(0).vt_next), (0, -50));
-    while c.probes().prescaler & 31 != PHASE_COMMIT {
+    while c.probes().prescaler & 31 != PHASE_COMMIT[0] {
         c.tick(&inp);
         assert_eq!(c.motor(0).int_flags & INT_STOP, 0, "no stop before the commit");
     }
     c.tick(&inp); // commit edge: vt changes in its new state, the stop reads the old one
     assert_eq!(c.motor(0).vt, -50);
     assert_eq!(c.motor(0).int_flags & INT_STOP, 0);
-    c.tick(&inp); // phase 30: V = 0, vt < 0, left switch active: STOP
+    c.tick(&inp); // the edge after the commit: V = 0, vt < 0, left switch active: STOP
     assert_eq!(c.motor(0).int_flags & INT_STOP, INT_STOP);
     assert_eq!(c.motor(0).v, 0);
 }

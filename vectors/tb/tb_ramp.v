@@ -1,5 +1,7 @@
-// tb_ramp: replays pin-level vectors of unit `ramp` on tmc429_ramp (docs/vectors.md).
-//   iverilog -g2005 -I vectors/tb -o tb_ramp vectors/tb/tb_ramp.v rtl/tmc429_ramp.v
+// tb_ramp: replays pin-level vectors of unit `ramp` on tmc429_ramp with the ramp tick's
+// arithmetic tmc429_accel serving it alone, as it serves each motor in its ramp tick
+// (docs/vectors.md).
+//   iverilog -g2005 -I vectors/tb -o tb_ramp vectors/tb/tb_ramp.v rtl/tmc429_ramp.v rtl/tmc429_accel.v
 //   vvp tb_ramp +hex=X.hex +cols=X.cols +meta=X.meta
 // One instance replays the motors of the file one after the other (each motor's lines begin
 // with its reset line). CHIP sets HAS_USTEP as tmc429_motor_regs does (0 on the TMC428) and is
@@ -15,17 +17,26 @@ module tb_ramp;
 
 `include "vec_player.vh"
 
+    wire [19:0] v_rmp;
+    wire [11:0] a_rmp;
+    wire        mc_rmp, stop_soft;
+    tmc429_accel accel (
+        .sel({2'b00, vin[111]}), .v({40'd0, vout[104:85]}), .vt({24'd0, vin[42:31]}),
+        .stop_soft({2'b00, stop_soft}), .a_max({22'd0, vin[72:62]}),
+        .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
     tmc429_ramp #(.HAS_USTEP(CHIP != 0)) dut (
         .clk(clk), .rst(vin[113]),
         .run(vin[112]), .ramp_tick(vin[111]), .pulse_tick(vin[110]), .rm(vin[109:108]),
-        .x_target(vin[107:84]), .v_min(vin[83:73]), .a_max(vin[72:62]), .ref_conf(vin[61:58]),
+        .x_target(vin[107:84]), .v_min(vin[83:73]), .ref_conf(vin[61:58]),
         .usrs(vin[57:55]), .dx_ref_tolerance(vin[54:43]),
         .tol_k(13'd4096 - {1'b0, vin[54:43]}), .vt(vin[42:31]),
-        .sw_l(vin[30]), .sw_r(vin[29]), .we(vin[28]), .widx(vin[27:24]), .wdata(vin[23:0]),
+        .sw_l(vin[30]), .sw_r(vin[29]),
+        .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
+        .we(vin[28]), .widx(vin[27:24]), .wdata(vin[23:0]),
         .x_actual(vout[128:105]), .v(vout[104:85]), .v_target(vout[84:73]),
         .a_actual(vout[72:61]), .ustep(vout[60:53]), .acc(vout[52:42]), .step(vout[41]),
         .dir(vout[40]), .x_latched(vout[39:16]), .lp(vout[15]), .xeqt(vout[14]),
-        .stop(vout[13]), .tol_ok(vout[12]), .v_actual(vout[11:0]));
+        .stop(vout[13]), .tol_ok(vout[12]), .v_actual(vout[11:0]), .stop_soft(stop_soft));
 endmodule
 
 `default_nettype wire

@@ -1,7 +1,7 @@
 //! One motor's ramp and pulse generator run frame by frame (C40, C41, C51–C53), skipping the
 //! frames without a tick and, where nothing but the position changes, whole runs of ticks at
 //! once: moves of 2^22 steps at any pulse_div and ramp_div take milliseconds. The arithmetic is
-//! the model's own ([`Motor::target_velocity`], [`Motor::approach`]); only the schedule is
+//! the model's own ([`Motor::target_velocity`], `tmc429_model::accel::approach`); only the schedule is
 //! written out here, and `frames_equal_the_chip` (tests/braking_law.rs) holds it to the chip
 //! cycle by cycle.
 #![allow(dead_code)]
@@ -171,7 +171,7 @@ impl Frames {
         let vt = self.m.target_velocity();
         let m = &mut self.m;
         if m.rm != HOLD_MODE && due(self.frame, m.ramp_div) {
-            let v = Motor::approach(m.v, vt * 256, m.a_max);
+            let v = tmc429_model::accel::approach(m.v, vt * 256, m.a_max);
             m.a_actual = v - m.v;
             m.v = v;
         }

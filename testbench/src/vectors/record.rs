@@ -690,7 +690,7 @@ impl RampCsv {
             return;
         }
         for m in 0..chip.motor_count() {
-            if schedule::ramp_tick(c, chip.motor(m).ramp_div) {
+            if schedule::ramp_tick(c, m, chip.motor(m).ramp_div) {
                 self.due |= 1 << m;
             }
         }

@@ -1,0 +1,81 @@
+// tmc429_accel: the arithmetic of the ramp tick, one unit for the three motors
+// (docs/model-contract.md C51, C41; TMC428 §8.7, §8.11).
+//
+// The motors' ramp ticks fall in different phases of the frame (16, 23 and 30, C41), so at most
+// one motor ramps in a cycle: `sel` (one-hot, the registered ramp ticks) picks its operands, an
+// AND-OR of the three motors' V, committed target vt, registered soft stop action and a_max.
+// Combinational; the motor's tmc429_ramp loads the results in its ramp tick:
+//   T = 256 vt, or 0 while stop_soft; V moves toward T by at most a_max and lands on T when
+//   |T - V| <= a_max; a_rmp = the change of V; mc_rmp = the new V's v_mc (tmc429_ramp).
+// Range: |V|, |T| <= 2047*256, a_max <= 2047. V - T and V + a_max - T >= -2*2047*256 fit in
+// 21 bits; a sum above 2^20 - 1 (wrapping to a negative sign) needs |T - V| > 2^20 - 2^11,
+// and then the other sum is negative anyway, so `land` is exact.
+`default_nettype none
+
+module tmc429_accel #(
+    parameter NMOT = 3             // motors present (TMC4210: 1, whose operands need no select)
+) (
+    /* verilator lint_off UNUSEDSIGNAL */   // NMOT = 1: motor 0's operands alone
+    input  wire [2:0]  sel,        // ramp tick of motor m (at most one)
+    // per-motor operands, motor m in bits [w*(m+1)-1 : w*m]
+    input  wire [59:0] v,          // internal velocity V, 1/256 units, two's complement
+    input  wire [35:0] vt,         // committed target velocity (tmc429_vtarget)
+    input  wire [2:0]  stop_soft,  // registered soft stop action (C61)
+    input  wire [32:0] a_max,
+    /* verilator lint_on UNUSEDSIGNAL */
+    output wire [19:0] v_rmp,      // V after the tick
+    output wire [11:0] a_rmp,      // a_actual after the tick
+    output wire        mc_rmp      // v_mc of v_rmp
+);
+    // ---- operands of the selected motor ---------------------------------------------------
+    reg  [19:0] vs;
+    reg  [11:0] vts;
+    reg  [10:0] as;
+    reg         ss;
+    generate
+        if (NMOT == 1) begin : one
+            always @(*) begin
+                vs = v[19:0];  vts = vt[11:0];  as = a_max[10:0];  ss = stop_soft[0];
+            end
+        end else begin : three
+            integer m;
+            always @(*) begin
+                vs = 20'd0;  vts = 12'd0;  as = 11'd0;  ss = 1'b0;
+                for (m = 0; m < 3; m = m + 1) begin
+                    vs  = vs  | (v[20*m +: 20] & {20{sel[m]}});
+                    vts = vts | (vt[12*m +: 12] & {12{sel[m]}});
+                    as  = as  | (a_max[11*m +: 11] & {11{sel[m]}});
+                    ss  = ss  | (stop_soft[m] & sel[m]);
+                end
+            end
+        end
+    endgenerate
+
+    // ---- V toward T (C51) -------------------------------------------------------------------
+    // up = V < T; lands on T when V + a_max - T >= 0 and T + a_max - V >= 0: the step sums
+    // V +- a_max (21 bits, no wrap-around) minus / from T, each one sign test; else V +- a_max.
+    wire [11:0] t_hi  = ss ? 12'd0 : vts;
+    wire [20:0] t_w   = {t_hi[11], t_hi, 8'd0};
+    wire [20:0] v_w   = {vs[19], vs};
+    wire [19:0] v_up  = vs + {9'd0, as};       // used only short of T: within +-2047*256
+    wire [19:0] v_dn  = vs - {9'd0, as};
+    /* verilator lint_off UNUSEDSIGNAL */     // only the signs are used
+    wire [20:0] s_vt  = v_w - t_w;                                      // V - T
+    wire [20:0] s_lo  = v_w + {10'd0, as} - t_w;                        // V + a_max - T
+    wire [20:0] s_hi  = t_w + {10'd0, as} - v_w;                        // T + a_max - V
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire        up    = s_vt[20];
+    wire        land  = ~s_lo[20] & ~s_hi[20];
+    wire [11:0] d_lo  = {t_hi[3:0], 8'd0} - vs[11:0];                   // T - V, bits 11..0
+    wire [11:0] a_neg = 12'd0 - {1'b0, as};
+    assign v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
+    // the change of V: d when landing, else the step
+    assign a_rmp = land ? d_lo : (up ? {1'b0, as} : a_neg);
+    // v_mc of the new V: V + a_max (V - a_max) has low byte 0 iff V's low byte is -a_max
+    // (a_max) mod 256; landed on T = 256 vt, it is T's sign
+    wire        mc_up = v_up[19] & (vs[7:0] == (8'd0 - as[7:0]));
+    wire        mc_dn = v_dn[19] & (vs[7:0] == as[7:0]);
+    assign mc_rmp = land ? t_hi[11] : (up ? mc_up : mc_dn);
+endmodule
+
+`default_nettype wire
