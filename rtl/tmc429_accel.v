@@ -28,24 +28,25 @@ module tmc429_accel #(
     output wire        mc_rmp      // v_mc of v_rmp
 );
     // ---- operands of the selected motor ---------------------------------------------------
+    // t_hi = T / 256: vt of the selected motor, 0 while its stop_soft holds; each motor's term
+    // is sel & ~stop_soft & vt, so that the select is one AND-OR (two LUT levels)
     reg  [19:0] vs;
-    reg  [11:0] vts;
+    reg  [11:0] t_hi;
     reg  [10:0] as;
-    reg         ss;
     generate
         if (NMOT == 1) begin : one
             always @(*) begin
-                vs = v[19:0];  vts = vt[11:0];  as = a_max[10:0];  ss = stop_soft[0];
+                vs = v[19:0];  as = a_max[10:0];
+                t_hi = stop_soft[0] ? 12'd0 : vt[11:0];
             end
         end else begin : three
             integer m;
             always @(*) begin
-                vs = 20'd0;  vts = 12'd0;  as = 11'd0;  ss = 1'b0;
+                vs = 20'd0;  t_hi = 12'd0;  as = 11'd0;
                 for (m = 0; m < 3; m = m + 1) begin
-                    vs  = vs  | (v[20*m +: 20] & {20{sel[m]}});
-                    vts = vts | (vt[12*m +: 12] & {12{sel[m]}});
-                    as  = as  | (a_max[11*m +: 11] & {11{sel[m]}});
-                    ss  = ss  | (stop_soft[m] & sel[m]);
+                    vs   = vs   | (v[20*m +: 20] & {20{sel[m]}});
+                    t_hi = t_hi | (vt[12*m +: 12] & {12{sel[m] & ~stop_soft[m]}});
+                    as   = as   | (a_max[11*m +: 11] & {11{sel[m]}});
                 end
             end
         end
@@ -54,7 +55,6 @@ module tmc429_accel #(
     // ---- V toward T (C51) -------------------------------------------------------------------
     // up = V < T; lands on T when V + a_max - T >= 0 and T + a_max - V >= 0: the step sums
     // V +- a_max (21 bits, no wrap-around) minus / from T, each one sign test; else V +- a_max.
-    wire [11:0] t_hi  = ss ? 12'd0 : vts;
     wire [20:0] t_w   = {t_hi[11], t_hi, 8'd0};
     wire [20:0] v_w   = {vs[19], vs};
     wire [19:0] v_up  = vs + {9'd0, as};       // used only short of T: within +-2047*256

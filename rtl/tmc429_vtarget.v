@@ -35,7 +35,11 @@
 `include "tmc429_regmap.vh"
 
 module tmc429_vtarget #(
-    parameter NMOT = 3            // motors present (TMC4210: 1)
+    parameter NMOT = 3,           // motors present (TMC4210: 1)
+    // square root steps: 0 two chained subtractions per cycle; 1 three subtractions side by
+    // side and a register 3y + 1 (about 110 logic cells more on an iCE40, one carry chain
+    // instead of two in the cycle); the result is the same
+    parameter ROOT_SPEC = 0
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -169,6 +173,7 @@ module tmc429_vtarget #(
 
     reg [23:0] a_dx;
     reg [1:0]  a_rm;
+    reg        a_soft;            // a_rm == SOFT_MODE
     reg [11:0] a_vtg;
     reg [4:0]  a_h;
     reg        a_sgn, a_zero;
@@ -176,12 +181,16 @@ module tmc429_vtarget #(
     reg [9:0]  a_w;               // multiplier word, consumed from the top
     reg [28:0] acc;
 
-    wire        a_soft = a_rm == 2'd1;
     wire        dx_neg = a_dx[23];
     // |dx| - 1 (RAMP) or |dx| (SOFT): dx ^ sign plus 0, +1 or -1
+    /* verilator lint_off UNUSEDSIGNAL */   // bits 23:19 are replaced by c_big
     wire [23:0] c0 = (a_dx ^ {24{dx_neg}})
                    + (a_soft ? {23'd0, dx_neg} : {24{~dx_neg}});
-    wire        c_big = (c0[23:19] != 5'd0) | (~a_soft & (c0[18:0] == 19'h7FFFF));
+    /* verilator lint_on UNUSEDSIGNAL */
+    // |dx| >= 2^19, from dx itself beside the sum (dx = 0 in RAMP_MODE, where |dx| - 1 wraps,
+    // gives no target velocity whatever c is)
+    wire        c_big = dx_neg ? ((a_dx[22:19] != 4'hF) | (a_dx[18:0] == 19'd0))
+                               : (a_dx[22:19] != 4'h0);
     wire [18:0] c_val = c_big ? {18'h3FFFF, a_soft} : c0[18:0];   // C43: |dx| <= 2^19-1
     // u: RAMP 1-e; SOFT 2, 1, 0, 0 for pdiv[1:0] = 0..3
     wire [1:0]  u = a_soft ? (a_pdiv[1] ? 2'd0 : (a_pdiv[0] ? 2'd1 : 2'd2))
@@ -192,13 +201,14 @@ module tmc429_vtarget #(
 
     always @(posedge clk) begin
         if (rst) begin
-            a_dx <= 24'd0; a_rm <= 2'd0;
+            a_dx <= 24'd0; a_rm <= 2'd0; a_soft <= 1'b0;
             a_vtg <= 12'd0; a_h <= 5'd0;
             a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 19'd0; a_w <= 10'd0; acc <= 29'd0;
         end else if (run) begin
             if (a_snap) begin
                 a_dx <= sx_t - sx_a;     // C43: 24-bit wrap-around
                 a_rm <= s_rm;
+                a_soft <= s_rm == 2'd1;
                 a_vtg <= s_vtg;
                 a_h <= s_h;
             end
@@ -218,13 +228,14 @@ module tmc429_vtarget #(
 
     // ---- B: square root / shift ------------------------------------------------------------
     reg [1:0]  b_rm;
-    reg [10:0] b_vmin, b_vmax;
+    reg        b_soft;            // b_rm == SOFT_MODE
+    reg [11:0] b_vmin, b_vmax;    // the signed results lo and v_max (sign applied at the load)
     reg [13:0] b_lo4, b_hi4;      // 4·lo + h and 4·(v_max + 1) + h (C: the clamp on 4·v + h)
-    reg [4:0]  b_h;               // h of RAMP_MODE, 0 otherwise
+    reg [14:0] b_hk;              // -h, or h + 4 when negative: the signed (q - h) >> 2 is q ^ neg + hk
+    reg        b_neg, b_none;     // sign of the result; no target velocity (result 0)
     reg        b_lo_gt;           // lo > v_max
     reg [11:0] b_vabs;            // |v_target| (VELOCITY_MODE), formed at the load
-    reg        b_vneg;
-    reg        b_sgn, b_zero, b_odd;
+    reg        b_odd;
     reg [2:0]  b_ne;
     reg [27:0] sr;
     reg [14:0] rem;
@@ -233,15 +244,14 @@ module tmc429_vtarget #(
 
     // control of the motor in A, formed from pdiv at the c cycle (the parameter RAM's output
     // holds the snapshot until the next snapshot edge, the load cycle) and taken at the load
-    wire       l_soft = a_rm == 2'd1;
     reg        l_odd;
     reg [2:0]  l_ne, l_t;
     always @(posedge clk) begin
         if (rst) begin
             l_odd <= 1'b0; l_ne <= 3'd0; l_t <= 3'd0;
         end else if (run & a_c) begin
-            l_odd  <= l_soft & a_pdiv[1] & a_pdiv[0];
-            l_ne   <= l_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : 3'd7;
+            l_odd  <= a_soft & a_pdiv[1] & a_pdiv[0];
+            l_ne   <= a_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : 3'd7;
             l_t    <= a_pdiv[3:1];
         end
     end
@@ -249,39 +259,82 @@ module tmc429_vtarget #(
     // RAMP_MODE radicand: Y = floor(acc·2^11 / 4^t) (acc·2^11 = p_mul·c·2^(12-e)); its
     // square root below 2^14 needs the 28 bits [27:0], a nonzero bit above saturates
     wire [39:0] z_sh   = {acc, 11'd0} >> {l_t, 1'b0};
-    wire        m_soft = b_load ? l_soft : (b_rm == 2'd1);
-    wire [27:0] src_l  = l_soft ? acc[28:1] : z_sh[27:0];         // radicand / shift at the load
+    wire        m_soft = b_load ? a_soft : b_soft;
+    wire [27:0] src_l  = a_soft ? acc[28:1] : z_sh[27:0];         // radicand / shift at the load
     wire [23:0] sr_nx  = b_load ? src_l[23:0] : sr[23:0];          // the bits after these four
-    wire        st_l   = ~l_soft & (z_sh[39:28] != 12'd0);
+    wire        st_l   = ~a_soft & (z_sh[39:28] != 12'd0);
     wire        step   = b_load | (b_k < b_ne);
 
-    // two restoring square-root steps; below saturation the root has at most 14 bits and the
-    // remainder at most 15, so bits 16:15 of a difference that is kept are 0. They are formed
-    // for the running state (rem, y, sr) and for the load (remainder and result 0, which
-    // folds to a small function of four radicand bits) side by side, and the load selects
-    // after them, so the subtractions start at flip-flops.
-    function [28:0] sqrt2;          // {r2, y2}
-        input [14:0] rem_in;
-        input [13:0] y_in;
-        input [3:0]  s4;
-        /* verilator lint_off UNUSEDSIGNAL */   // bits 16:15 of a kept difference are 0
-        reg   [17:0] t1, t2;
-        /* verilator lint_on UNUSEDSIGNAL */
-        reg   [14:0] r1, r2;
-        reg   [13:0] y1;
-        begin
-            t1 = {1'b0, rem_in, s4[3:2]} - {2'b00, y_in, 2'b01};
-            r1 = ~t1[17] ? t1[14:0] : {rem_in[12:0], s4[3:2]};
-            y1 = {y_in[12:0], ~t1[17]};
-            t2 = {1'b0, r1, s4[1:0]} - {2'b00, y1, 2'b01};
-            r2 = ~t2[17] ? t2[14:0] : {r1[12:0], s4[1:0]};
-            sqrt2 = {r2, y1[12:0], ~t2[17]};
+    // two restoring square-root steps per cycle; below saturation the root has at most 14 bits
+    // and the remainder at most 15. R = 16·rem + s4 (the remainder with the next four radicand
+    // bits); the first bit b1 is 1 when R - (16y + 4) >= 0, the second bit b0 when the
+    // remainder after the first step minus (8y + 4·b1 + 1) is >= 0. ROOT_SPEC selects how:
+    wire [4:0]  q_ld;             // the load's two steps (sqrt_ld below)
+    wire        b1, b0;
+    wire [14:0] r_rn;             // the remainder after both steps
+    generate
+        if (ROOT_SPEC == 0) begin : chained
+            // the second subtraction takes the first one's kept remainder: two carry chains with
+            // the restoring multiplexer between them
+            /* verilator lint_off UNUSEDSIGNAL */   // bits 16:15 of a kept difference are 0
+            wire [17:0] t1 = {1'b0, rem, sr[27:26]} - {2'b00, y, 2'b01};
+            wire [14:0] r1 = b1 ? t1[14:0] : {rem[12:0], sr[27:26]};
+            wire [17:0] t2 = {1'b0, r1, sr[25:24]} - {2'b00, y[12:0], b1, 2'b01};
+            /* verilator lint_on UNUSEDSIGNAL */
+            assign b1 = ~t1[17];
+            assign b0 = ~t2[17];
+            assign r_rn = b0 ? t2[14:0] : {r1[12:0], sr[25:24]};
+        end else begin : side_by_side
+            // the three differences either pair of steps can keep, side by side from flip-flops,
+            // each one subtraction:
+            //   D1 = R - (16y + 4)    b1 = 1 when D1 >= 0
+            //   D2 = R - (8y + 1)     b1 = 0: b0 = 1 when D2 >= 0 (else R is kept)
+            //   D3 = R - (24y + 9)    b1 = 1: b0 = 1 when D3 >= 0 (else D1 is kept)
+            // 24y + 9 = 8·y3p + 1 with y3p = 3y + 1, a register of its own: y' = 4y + b gives
+            // y3p' = 4·(y3p + c) + l with (c, l) = (-1, 1), (0, 0), (0, 3), (1, 2) for b = 0..3,
+            // so y3p - 1 and y3p + 1 are formed beside the differences and the new bits select.
+            reg  [15:0] y3p;
+            wire [19:0] r_w = {1'b0, rem, sr[27:24]};
+            /* verilator lint_off UNUSEDSIGNAL */   // bits 19:15 of a kept difference are 0
+            wire [19:0] d1  = r_w - {2'b00, y, 4'b0100};
+            wire [19:0] d2  = r_w - {3'b000, y, 3'b001};
+            wire [19:0] d3  = r_w - {1'b0, y3p, 3'b001};
+            wire [15:0] y3m = y3p - 16'd1;
+            wire [15:0] y3i = y3p + 16'd1;
+            /* verilator lint_on UNUSEDSIGNAL */
+            assign b1 = ~d1[19];
+            assign b0 = b1 ? ~d3[19] : ~d2[19];
+            assign r_rn = b1 ? (b0 ? d3[14:0] : d1[14:0]) : (b0 ? d2[14:0] : r_w[14:0]);
+            wire [15:0] y3_rn = b1 ? (b0 ? {y3i[13:0], 2'd2} : {y3p[13:0], 2'd3})
+                                   : (b0 ? {y3p[13:0], 2'd0} : {y3m[13:0], 2'd1});
+            // 3y + 1 of the loaded root 0..3: 1, 4, 7, 10
+            wire [3:0]  y3_ld = {q_ld[1] & q_ld[0], q_ld[1] ^ q_ld[0], q_ld[1], ~q_ld[0]};
+            always @(posedge clk) begin
+                if (rst)
+                    y3p <= 16'd1;
+                else if (run & b_run & step & ~m_soft)
+                    y3p <= b_load ? {12'd0, y3_ld} : y3_rn;
+            end
         end
+    endgenerate
+    // the two steps from remainder and result 0: root and remainder of the four bits, a table
+    // (written out, so that synthesis does not share the running steps' subtractors with it)
+    function [4:0] sqrt_ld;         // {r[2:0], y[1:0]}
+        input [3:0] s4;
+        case (s4)
+        4'd0:  sqrt_ld = {3'd0, 2'd0};  4'd1:  sqrt_ld = {3'd0, 2'd1};
+        4'd2:  sqrt_ld = {3'd1, 2'd1};  4'd3:  sqrt_ld = {3'd2, 2'd1};
+        4'd4:  sqrt_ld = {3'd0, 2'd2};  4'd5:  sqrt_ld = {3'd1, 2'd2};
+        4'd6:  sqrt_ld = {3'd2, 2'd2};  4'd7:  sqrt_ld = {3'd3, 2'd2};
+        4'd8:  sqrt_ld = {3'd4, 2'd2};  4'd9:  sqrt_ld = {3'd0, 2'd3};
+        4'd10: sqrt_ld = {3'd1, 2'd3};  4'd11: sqrt_ld = {3'd2, 2'd3};
+        4'd12: sqrt_ld = {3'd3, 2'd3};  4'd13: sqrt_ld = {3'd4, 2'd3};
+        4'd14: sqrt_ld = {3'd5, 2'd3};  default: sqrt_ld = {3'd6, 2'd3};
+        endcase
     endfunction
-    wire [28:0] q_run = sqrt2(rem, y, sr[27:24]);
-    wire [28:0] q_ld  = sqrt2(15'd0, 14'd0, src_l[27:24]);
-    wire [14:0] r2    = b_load ? q_ld[28:14] : q_run[28:14];
-    wire [13:0] y2    = b_load ? q_ld[13:0] : q_run[13:0];
+    assign q_ld = sqrt_ld(src_l[27:24]);
+    wire [14:0] r2    = b_load ? {12'd0, q_ld[4:2]} : r_rn;
+    wire [13:0] y2    = b_load ? {12'd0, q_ld[1:0]} : {y[11:0], b1, b0};
     wire        st_q  = b_load ? st_l : sticky;
     // SOFT_MODE: four bits shifted into y[11:0]
     wire [11:0] y_p   = b_load ? {8'd0, src_l[27:24]} : {y[7:0], sr[27:24]};
@@ -291,23 +344,27 @@ module tmc429_vtarget #(
     wire        l_vel  = a_rm == 2'd2;
     wire [10:0] l_lo   = l_vel ? 11'd0 : a_vmin;
     wire [4:0]  l_h    = (a_rm == 2'd0) ? a_h : 5'd0;
+    wire        l_neg  = l_vel ? a_vtg[11] : a_sgn;
 
     always @(posedge clk) begin
         if (rst) begin
-            b_rm <= 2'd0; b_vmin <= 11'd0; b_vmax <= 11'd0; b_vabs <= 12'd0; b_vneg <= 1'b0;
-            b_lo4 <= 14'd0; b_hi4 <= 14'd4; b_h <= 5'd0; b_lo_gt <= 1'b0;
-            b_sgn <= 1'b0; b_zero <= 1'b1; b_odd <= 1'b0; b_ne <= 3'd0;
+            b_rm <= 2'd0; b_soft <= 1'b0; b_vmin <= 12'd0; b_vmax <= 12'd0; b_vabs <= 12'd0;
+            b_lo4 <= 14'd0; b_hi4 <= 14'd4; b_hk <= 15'd0; b_lo_gt <= 1'b0;
+            b_neg <= 1'b0; b_none <= 1'b1; b_odd <= 1'b0; b_ne <= 3'd0;
             sr <= 28'd0; rem <= 15'd0; y <= 14'd0; sticky <= 1'b0;
         end else if (run) begin
             if (b_load) begin
-                b_rm <= a_rm; b_vmin <= l_lo; b_vmax <= a_vmax;
+                b_rm <= a_rm; b_soft <= a_soft;
+                b_vmin <= l_neg ? 12'd0 - {1'b0, l_lo} : {1'b0, l_lo};
+                b_vmax <= l_neg ? 12'd0 - {1'b0, a_vmax} : {1'b0, a_vmax};
                 b_lo4 <= {1'b0, l_lo, 2'b00} + {9'd0, l_h};
                 b_hi4 <= {1'b0, a_vmax, 2'b00} + {9'd0, l_h} + 14'd4;
-                b_h <= l_h;
+                b_hk <= l_neg ? {10'd0, l_h} + 15'd4 : 15'd0 - {10'd0, l_h};
                 b_lo_gt <= l_lo > a_vmax;
                 b_vabs <= a_vtg[11] ? (~a_vtg + 12'd1) : a_vtg;  // -2048 -> 2048 (>= v_max)
-                b_vneg <= a_vtg[11];
-                b_sgn <= a_sgn; b_zero <= a_zero; b_odd <= l_odd; b_ne <= l_ne;
+                b_neg <= l_neg;
+                b_none <= (a_rm == 2'd3) | (~a_rm[1] & a_zero);
+                b_odd <= l_odd; b_ne <= l_ne;
             end
             if (b_run & step) begin
                 sr <= {sr_nx, 4'd0};
@@ -326,8 +383,9 @@ module tmc429_vtarget #(
     // ---- C: clamp, sign -------------------------------------------------------------------
     // The clamp min(max(v, lo), v_max) on q = 4·v + h (RAMP_MODE: q = isqrt(16·X), v =
     // (q - h) >> 2, 0 below h; SOFT and VELOCITY: q = 4·mag, h = 0): both comparisons of q
-    // against the bounds formed at the load, the subtraction beside them (C50); the sign is
-    // applied at the commit (res holds sign and magnitude), so that no negation follows
+    // against the bounds formed at the load, the subtraction beside them (C50). The sign is
+    // known at the load: the bounds are negated there, and (q - h) >> 2 is formed signed,
+    // -((q - h) >> 2) = (h + 3 - q) >> 2 = (~q + h + 4) >> 2, so that no negation follows
     wire        c_vel  = b_rm == 2'd2;
     wire        c_ramp = b_rm == 2'd0;
     wire        y_sat  = sticky | (~b_odd & y[11]);
@@ -337,23 +395,17 @@ module tmc429_vtarget #(
     wire        q_sat  = c_ramp & sticky;
     wire        below  = ~q_sat & (q < b_lo4);
     wire        above  = q_sat | (q >= b_hi4);
-    /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits of q - h
-    wire [13:0] q_h    = q - {9'd0, b_h};
+    /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits and the sign's copy
+    wire [14:0] q_h    = ({1'b0, q} ^ {15{b_neg}}) + b_hk;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [10:0] m3     = below ? (b_lo_gt ? b_vmax : b_vmin)
-                       : (above ? b_vmax : q_h[12:2]);
-    wire        c_neg  = c_vel ? b_vneg : b_sgn;
-    wire        c_none = (b_rm == 2'd3) | (~b_rm[1] & b_zero);
-    // sign and magnitude; none = 0 (magnitude 0, sign 0)
-    wire [11:0] res    = c_none ? 12'd0 : {c_neg, m3};
-    function [11:0] sm2c;           // sign and magnitude -> two's complement
-        input [11:0] sm;
-        sm2c = sm[11] ? (12'd0 - {1'b0, sm[10:0]}) : {1'b0, sm[10:0]};
-    endfunction
+    wire [11:0] m3     = below ? (b_lo_gt ? b_vmax : b_vmin)
+                       : (above ? b_vmax : q_h[13:2]);
+    // two's complement; none = 0
+    wire [11:0] res    = b_none ? 12'd0 : m3;
 
     reg [35:0] vt_r;
     wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
-    wire [35:0] res_c   = {3{sm2c(res)}} & present;
+    wire [35:0] res_c   = {3{res}} & present;
     integer     k;
     always @(posedge clk) begin
         if (rst) begin
