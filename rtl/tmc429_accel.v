@@ -2,9 +2,13 @@
 // (docs/model-contract.md C51, C41; TMC428 §8.7, §8.11).
 //
 // The motors' ramp ticks fall in different phases of the frame (16, 23 and 30, C41), so at most
-// one motor ramps in a cycle: `sel` (one-hot, the registered ramp ticks) picks its operands, an
-// AND-OR of the three motors' V, committed target vt, registered soft stop action and a_max.
-// Combinational; the motor's tmc429_ramp loads the results in its ramp tick:
+// one motor ramps in a cycle. Its operands are registered in the edge before its ramp tick
+// (`ld`, one-hot: the next cycle is motor m's ramp phase), from the state they have after that
+// edge: V as it holds without a tick (`v_hold` of tmc429_ramp: µC write, stop_hard), the
+// soft stop action's next state, a_max with a µC write of that edge, and the committed target
+// vt (committed at phase 7m + 14, stable in that edge); T is registered with the soft stop
+// applied. So the tick's arithmetic starts at flip-flops; the motor's tmc429_ramp loads the
+// results in its ramp tick:
 //   T = 256 vt, or 0 while stop_soft; V moves toward T by at most a_max and lands on T when
 //   |T - V| <= a_max; a_rmp = the change of V; mc_rmp = the new V's v_mc (tmc429_ramp).
 // Range: |V|, |T| <= 2047*256, a_max <= 2047. V - T and V + a_max - T >= -2*2047*256 fit in
@@ -15,42 +19,54 @@
 module tmc429_accel #(
     parameter NMOT = 3             // motors present (TMC4210: 1, whose operands need no select)
 ) (
+    input  wire        clk,
+    input  wire        rst,
     /* verilator lint_off UNUSEDSIGNAL */   // NMOT = 1: motor 0's operands alone
-    input  wire [2:0]  sel,        // ramp tick of motor m (at most one)
-    // per-motor operands, motor m in bits [w*(m+1)-1 : w*m]
-    input  wire [59:0] v,          // internal velocity V, 1/256 units, two's complement
+    input  wire [2:0]  ld,         // the next cycle is motor m's ramp phase (at most one)
+    // per-motor operands after this edge, motor m in bits [w*(m+1)-1 : w*m]
+    input  wire [59:0] v_hold,     // V unless its tick loads it, 1/256 units, two's complement
     input  wire [35:0] vt,         // committed target velocity (tmc429_vtarget)
-    input  wire [2:0]  stop_soft,  // registered soft stop action (C61)
-    input  wire [32:0] a_max,
+    input  wire [2:0]  stop_soft_nx, // soft stop action (C61) after this edge
+    input  wire [32:0] a_max,      // a_max before this edge ...
+    input  wire [2:0]  a_max_we,   // ... a µC write of motor m's a_max in this edge ...
+    input  wire [10:0] a_max_wd,   // ... and its data
     /* verilator lint_on UNUSEDSIGNAL */
     output wire [19:0] v_rmp,      // V after the tick
     output wire [11:0] a_rmp,      // a_actual after the tick
     output wire        mc_rmp      // v_mc of v_rmp
 );
-    // ---- operands of the selected motor ---------------------------------------------------
-    // t_hi = T / 256: vt of the selected motor, 0 while its stop_soft holds; each motor's term
-    // is sel & ~stop_soft & vt, so that the select is one AND-OR (two LUT levels)
-    reg  [19:0] vs;
-    reg  [11:0] t_hi;
-    reg  [10:0] as;
+    // ---- operands of the motor whose ramp tick is next ------------------------------------
+    // t_hi = T / 256: vt, 0 while the soft stop acts; each motor's term is ld & ~stop_soft & vt
+    reg  [19:0] vs_n, vs;
+    reg  [11:0] th_n, t_hi;
+    reg  [10:0] am_n, as;
+    reg         aw_n;
     generate
         if (NMOT == 1) begin : one
             always @(*) begin
-                vs = v[19:0];  as = a_max[10:0];
-                t_hi = stop_soft[0] ? 12'd0 : vt[11:0];
+                vs_n = v_hold[19:0];  am_n = a_max[10:0];  aw_n = a_max_we[0];
+                th_n = stop_soft_nx[0] ? 12'd0 : vt[11:0];
             end
         end else begin : three
             integer m;
             always @(*) begin
-                vs = 20'd0;  t_hi = 12'd0;  as = 11'd0;
+                vs_n = 20'd0;  th_n = 12'd0;  am_n = 11'd0;  aw_n = 1'b0;
                 for (m = 0; m < 3; m = m + 1) begin
-                    vs   = vs   | (v[20*m +: 20] & {20{sel[m]}});
-                    t_hi = t_hi | (vt[12*m +: 12] & {12{sel[m] & ~stop_soft[m]}});
-                    as   = as   | (a_max[11*m +: 11] & {11{sel[m]}});
+                    vs_n = vs_n | (v_hold[20*m +: 20] & {20{ld[m]}});
+                    th_n = th_n | (vt[12*m +: 12] & {12{ld[m] & ~stop_soft_nx[m]}});
+                    am_n = am_n | (a_max[11*m +: 11] & {11{ld[m]}});
+                    aw_n = aw_n | (a_max_we[m] & ld[m]);
                 end
             end
         end
     endgenerate
+    always @(posedge clk) begin
+        if (rst) begin
+            vs <= 20'd0;  t_hi <= 12'd0;  as <= 11'd0;
+        end else if (|ld[NMOT-1:0]) begin
+            vs <= vs_n;  t_hi <= th_n;  as <= aw_n ? a_max_wd : am_n;
+        end
+    end
 
     // ---- V toward T (C51) -------------------------------------------------------------------
     // up = V < T; lands on T when V + a_max - T >= 0 and T + a_max - V >= 0: the step sums

@@ -32,7 +32,8 @@ module tmc429_motor_regs #(
     input  wire [11:0] vt,        // committed target velocity (C41)
     // the ramp tick's operands and results (tmc429_accel, shared by the motors)
     output reg  [10:0] a_max,
-    output wire        stop_soft,
+    output wire [19:0] v_hold,    // V after this edge without a tick (tmc429_ramp)
+    output wire        stop_soft_nx,
     input  wire [19:0] v_rmp,
     input  wire [11:0] a_rmp,
     input  wire        mc_rmp,
@@ -81,7 +82,7 @@ module tmc429_motor_regs #(
         .we(we), .widx(widx), .wdata(wdata),
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
-        .stop_soft(stop_soft),
+        .v_hold(v_hold), .stop_soft_nx(stop_soft_nx),
         .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .v_actual(v_actual));
 
     // ---- interrupt conditions (C63), from the old state -------------------------------

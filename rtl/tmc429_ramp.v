@@ -63,7 +63,11 @@ module tmc429_ramp #(
     output reg         dir,        // direction of the last step (1 = negative)
     output reg  [23:0] x_latched,
     output reg         lp,
-    output reg         stop_soft,  // registered soft stop action (C61), an operand of the tick
+    // what V and the registered soft stop action hold after this edge unless the ramp tick
+    // loads V: the next state the shared tick unit takes its operands from (tmc429_accel, in
+    // the edge before the tick)
+    output wire [19:0] v_hold,
+    output wire        stop_soft_nx,
     // conditions of the old state
     output wire        xeqt,       // x_actual == x_target
     output wire        stop,       // switch stop condition (STOP interrupt, C63)
@@ -72,6 +76,7 @@ module tmc429_ramp #(
 );
     reg ref_prev;
     reg stop_hard;                   // registered hard stop action (C52, C61)
+    reg stop_soft;                   // registered soft stop action (C61)
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -151,6 +156,17 @@ module tmc429_ramp #(
     wire        w_us  = we & (widx == `TMC429_IDX_USTEP_COUNT) & (HAS_USTEP != 0);
     wire [11:0] w_v   = (wdata[`TMC429_F_V_ACTUAL] == 12'h800) ? 12'h801 : wdata[`TMC429_F_V_ACTUAL];
 
+    // ---- V's next state (C3, C51, C61) ----------------------------------------------------
+    // the µC write wins; else stop_hard zeroes V; else the ramp tick loads the shared unit's
+    // result; else V holds. v_hold is that next state without the tick, so the tick's result
+    // enters V's input last (and the shared unit's operand register takes v_hold).
+    wire        zero_v  = run & stop_hard;
+    assign v_hold       = w_va ? {w_v, 8'd0} : (zero_v ? 20'd0 : v);
+    wire        mc_hold = w_va ? w_v[11] : (~zero_v & v_mc);
+    wire        v_load  = run & tick & ~stop_hard & ~w_va;
+    wire        ss_nx   = stop & soft_sw;
+    assign stop_soft_nx = run ? ss_nx : stop_soft;
+
     always @(posedge clk) begin
         if (rst) begin
             x_actual <= 24'd0;  v <= 20'd0;      v_target <= 12'd0;  a_actual <= 12'd0;
@@ -161,7 +177,7 @@ module tmc429_ramp #(
             if (run) begin
                 ref_prev <= sel;
                 stop_hard <= at_stop | (stop & ~soft_sw);
-                stop_soft <= stop & soft_sw;
+                stop_soft <= ss_nx;
                 if (lp & va_nz & (sel != ref_prev)) begin
                     x_latched <= x_actual;
                     lp <= 1'b0;
@@ -170,13 +186,6 @@ module tmc429_ramp #(
                     a_actual <= a_rmp;
                     if (~rm[1])
                         v_target <= vt;
-                end
-                if (stop_hard) begin
-                    v <= 20'd0;
-                    v_mc <= 1'b0;
-                end else if (tick) begin
-                    v <= v_rmp;
-                    v_mc <= mc_rmp;
                 end
                 step <= p_step;
                 if (pulse_tick)
@@ -187,12 +196,10 @@ module tmc429_ramp #(
                     dir <= v_neg;
                 end
             end
+            v <= v_load ? v_rmp : v_hold;
+            v_mc <= v_load ? mc_rmp : mc_hold;
             if (w_x)  x_actual <= wdata[`TMC429_F_X_ACTUAL];
             if (w_vt) v_target <= wdata[`TMC429_F_V_TARGET];
-            if (w_va) begin
-                v <= {w_v, 8'd0};
-                v_mc <= w_v[11];
-            end
             if (w_lp) lp <= 1'b1;
             if (w_us) ustep <= wdata[`TMC429_F_USTEP_COUNT];
         end

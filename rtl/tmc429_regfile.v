@@ -136,6 +136,9 @@ module tmc429_regfile #(
     // start. The ticks include run of the edge after (powered down the core has no tick).
     wire [4:0] ph      = prescaler[4:0];
     wire pd_nx       = (wr_g & (jdx == `TMC429_JDX_POWER_DOWN)) | (pd & ~frame_start);
+    // a frame of the divider a µC write of clk_config in this edge stores (C40)
+    wire r_due_w     = ones_d >= wdata[`TMC429_F_RAMP_DIV];
+    wire p_due_w     = ones_d >= wdata[`TMC429_F_PULSE_DIV];
 
     // ---- read address decode (C10) ---------------------------------------------------------
     // The address is complete in the SPI input register from the edge after the 7th bit, and
@@ -174,7 +177,8 @@ module tmc429_regfile #(
     wire [14:0] m_brake_h;
     wire [35:0] m_vt;
     wire [32:0] m_a_max;
-    wire [2:0]  m_stop_soft;
+    wire [59:0] m_v_hold;
+    wire [2:0]  m_stop_soft_nx, ph_ramp_ld, am_we;
     wire [19:0] v_rmp;
     wire [11:0] a_rmp;
     wire        mc_rmp;
@@ -189,19 +193,23 @@ module tmc429_regfile #(
             wire present = g < NMOT;
             wire we_m  = wr_mot & (a7[`TMC429_A7_SMDA] == g);
             wire w_div = we_m & (jdx == `TMC429_IDX_CLK_CONFIG);
-            wire [3:0] rdiv_nx = w_div ? wdata[`TMC429_F_RAMP_DIV] : m_ramp_div[4*g+3:4*g];
-            wire [3:0] pdiv_nx = w_div ? wdata[`TMC429_F_PULSE_DIV] : m_pulse_div[4*g+3:4*g];
+            // the frame's trailing ones against the divider stored and the one written, each a
+            // comparison from flip-flops; the write selects after them
+            wire r_due = w_div ? r_due_w : (ones_d >= m_ramp_div[4*g+3:4*g]);
+            wire p_due = w_div ? p_due_w : (ones_d >= m_pulse_div[4*g+3:4*g]);
             localparam [4:0] PH_RAMP = 5'd16 + 5'd7 * g;
             wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
+            assign ph_ramp_ld[g] = ph_ramp_nx;
+            assign am_we[g] = we_m & (jdx == `TMC429_IDX_A_MAX);
             wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_RAMP) : (ph == PH_RAMP + 5'd1));
-            assign ramp_tick_nx[g] = ph_ramp_nx & (ones_d >= rdiv_nx);
+            assign ramp_tick_nx[g] = ph_ramp_nx & r_due;
             always @(posedge clk) begin
                 if (rst) begin
                     ramp_tick[g] <= 1'b0;
                     pulse_tick[g] <= 1'b0;
                 end else begin
                     ramp_tick[g] <= ramp_tick_nx[g];
-                    pulse_tick[g] <= ph_pulse_nx & (ones_d >= pdiv_nx);
+                    pulse_tick[g] <= ph_pulse_nx & p_due;
                 end
             end
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
@@ -212,7 +220,8 @@ module tmc429_regfile #(
                 .ramp_tick(ramp_tick[g]),
                 .pulse_tick(pulse_tick[g]),
                 .vt(m_vt[12*g+11:12*g]),
-                .a_max(m_a_max[11*g+10:11*g]), .stop_soft(m_stop_soft[g]),
+                .a_max(m_a_max[11*g+10:11*g]), .v_hold(m_v_hold[20*g+19:20*g]),
+                .stop_soft_nx(m_stop_soft_nx[g]),
                 .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
@@ -227,10 +236,11 @@ module tmc429_regfile #(
     endgenerate
 
     // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
-    // C51), selected by the motors' ramp ticks
+    // C51): its operands are registered in the edge into a motor's ramp phase
     tmc429_accel #(.NMOT(NMOT)) u_accel (
-        .sel(ramp_tick),
-        .v(p_v), .vt(m_vt), .stop_soft(m_stop_soft), .a_max(m_a_max),
+        .clk(clk), .rst(rst), .ld(ph_ramp_ld),
+        .v_hold(m_v_hold), .vt(m_vt), .stop_soft_nx(m_stop_soft_nx), .a_max(m_a_max),
+        .a_max_we(am_we), .a_max_wd(wdata[`TMC429_F_A_MAX]),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
 
     // ---- target velocity (C41, C50) -------------------------------------------------------

@@ -19,10 +19,16 @@ module tb_ramp;
 
     wire [19:0] v_rmp;
     wire [11:0] a_rmp;
-    wire        mc_rmp, stop_soft;
-    tmc429_accel accel (
-        .sel({2'b00, vin[111]}), .v({40'd0, vout[104:85]}), .vt({24'd0, vin[42:31]}),
-        .stop_soft({2'b00, stop_soft}), .a_max({22'd0, vin[72:62]}),
+    wire        mc_rmp, stop_soft_nx;
+    wire [19:0] v_hold;
+    // the operands are registered in the edge before the ramp tick: the next line's ramp
+    // tick, vt and a_max (a_max as it is after that edge's write), the unit's V and soft stop
+    // action after that edge
+    tmc429_accel #(.NMOT(1)) accel (
+        .clk(clk), .rst(vin[113]), .ld({2'b00, vin_nx[111]}),
+        .v_hold({40'd0, v_hold}), .vt({24'd0, vin_nx[42:31]}),
+        .stop_soft_nx({2'b00, stop_soft_nx}), .a_max({22'd0, vin_nx[72:62]}),
+        .a_max_we(3'b000), .a_max_wd(11'd0),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
     tmc429_ramp #(.HAS_USTEP(CHIP != 0)) dut (
         .clk(clk), .rst(vin[113]),
@@ -36,7 +42,8 @@ module tb_ramp;
         .x_actual(vout[128:105]), .v(vout[104:85]), .v_target(vout[84:73]),
         .a_actual(vout[72:61]), .ustep(vout[60:53]), .acc(vout[52:42]), .step(vout[41]),
         .dir(vout[40]), .x_latched(vout[39:16]), .lp(vout[15]), .xeqt(vout[14]),
-        .stop(vout[13]), .tol_ok(vout[12]), .v_actual(vout[11:0]), .stop_soft(stop_soft));
+        .stop(vout[13]), .tol_ok(vout[12]), .v_actual(vout[11:0]),
+        .v_hold(v_hold), .stop_soft_nx(stop_soft_nx));
 endmodule
 
 `default_nettype wire

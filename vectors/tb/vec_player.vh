@@ -5,7 +5,9 @@
 //   localparam W_OUT = ...;   // width of the output columns
 //   localparam UNIT  = "...";  // the `unit` of the .meta file
 //   parameter  CHIP  = ...;   // the CHIP parameter of the DUT (checked against chip_code)
-// and after it connects the DUT to `vin` (inputs, MSB = first column) and `vout`.
+// and after it connects the DUT to `vin` (inputs, MSB = first column) and `vout`; `vin_nx` is
+// the next line's inputs (the last line's own on the last line), for a testbench that forms a
+// register input one edge ahead as the chip does.
 //
 // Plusargs: +hex=FILE +cols=FILE +meta=FILE [+max_report=N]. The player reads .meta (cycles,
 // width, mask, chip_code, unit) and .cols (column names and widths), loads .hex with $readmemh,
@@ -22,7 +24,7 @@
     localparam MAXCOLS = 64;
 
     reg                clk = 1'b1;
-    reg  [W_IN-1:0]    vin;
+    reg  [W_IN-1:0]    vin, vin_nx;
     wire [W_OUT-1:0]   vout;
 
     reg  [W_LINE-1:0]  mem [0:DEPTH-1];
@@ -65,6 +67,7 @@
 
     initial begin
         vin = {W_IN{1'b0}};
+        vin_nx = {W_IN{1'b0}};
         passed = 0; failed = 0; reported = 0; corrupt = 0;
         n_cycles = -1; width = -1; chip_code = -1; mask = {W_OUT{1'b1}};
         meta_unit = 0; meta_ok = 1'b1;
@@ -195,6 +198,9 @@
             line = mem[i];
             @(negedge clk);
             vin = line[W_LINE-5 -: W_IN];
+            line = mem[(i + 1 < n_cycles) ? i + 1 : i];
+            vin_nx = line[W_LINE-5 -: W_IN];
+            line = mem[i];
             exp_out = line[W_CHECK +: W_OUT];
             @(posedge clk);
             #1;
