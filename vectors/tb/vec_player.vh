@@ -39,7 +39,7 @@
     reg  [63:0]        cm;
     reg  [8*(W_LINE/4+16)-1:0] text;
     integer            nlines, len;
-    reg  [W_LINE-1:0]  line;
+    reg  [W_LINE-1:0]  line, line_nx;
     reg  [W_OUT-1:0]   exp_out, got, diff;
     reg  [8*64-1:0]    meta_unit;
     reg                meta_ok;
@@ -198,9 +198,8 @@
             line = mem[i];
             @(negedge clk);
             vin = line[W_LINE-5 -: W_IN];
-            line = mem[(i + 1 < n_cycles) ? i + 1 : i];
-            vin_nx = line[W_LINE-5 -: W_IN];
-            line = mem[i];
+            line_nx = mem[(i + 1 < n_cycles) ? i + 1 : i];
+            vin_nx = line_nx[W_LINE-5 -: W_IN];
             exp_out = line[W_CHECK +: W_OUT];
             @(posedge clk);
             #1;
