@@ -12,6 +12,7 @@
 // Register indices, fields and presence per variant: rtl/tmc429_regmap.vh.
 `default_nettype none
 `include "tmc429_regmap.vh"
+`include "tmc429_schedule.vh"
 
 module tmc429_regfile #(
     parameter CHIP = 1
@@ -119,7 +120,8 @@ module tmc429_regfile #(
 
     // ---- frame schedule (C40, C41) ----------------------------------------------------
     // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. Motor m's
-    // ramp tick is at phase 16 + 7m, its pulse tick at 17 + 7m. The ticks are registers formed
+    // ramp tick is at phase TMC429_PH_RAMP(m), its pulse tick at TMC429_PH_PULSE(m)
+    // (rtl/tmc429_schedule.vh: 16 + 7m, 17 + 7m). The ticks are registers formed
     // one edge ahead: the phase after this edge is p + run, the frame changes only from phase
     // 31 to 0 (and not while powered down), and the divider after this edge is the one a µC
     // write of clk_config in this edge stores.
@@ -197,11 +199,12 @@ module tmc429_regfile #(
             // comparison from flip-flops; the write selects after them
             wire r_due = w_div ? r_due_w : (ones_d >= m_ramp_div[4*g+3:4*g]);
             wire p_due = w_div ? p_due_w : (ones_d >= m_pulse_div[4*g+3:4*g]);
-            localparam [4:0] PH_RAMP = 5'd16 + 5'd7 * g;
+            localparam [4:0] PH_RAMP = `TMC429_PH_RAMP(g);
+            localparam [4:0] PH_PULSE = `TMC429_PH_PULSE(g);
             wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
             assign ph_ramp_ld[g] = ph_ramp_nx;
             assign am_we[g] = we_m & (jdx == `TMC429_IDX_A_MAX);
-            wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_RAMP) : (ph == PH_RAMP + 5'd1));
+            wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_PULSE - 5'd1) : (ph == PH_PULSE));
             assign ramp_tick_nx[g] = ph_ramp_nx & r_due;
             always @(posedge clk) begin
                 if (rst) begin

@@ -33,6 +33,7 @@
 // rtl/tmc429_regmap.vh.
 `default_nettype none
 `include "tmc429_regmap.vh"
+`include "tmc429_schedule.vh"
 
 module tmc429_vtarget #(
     parameter NMOT = 3,           // motors present (TMC4210: 1)
@@ -73,32 +74,39 @@ module tmc429_vtarget #(
     reg [1:0]  n_a_m;
     reg [2:0]  n_b_k;
     wire [4:0] phase_nx = phase + {4'd0, run};
+    // motor m's stages from its snapshot phase Sm = TMC429_PH_SNAPSHOT(m): A at Sm (snapshot),
+    // Sm + 1 (c), Sm + 2 .. Sm + 6 (multiply); B at Sm + 7 .. Sm + 13 (k = 0 .. 6, the load at
+    // k = 0); C in the commit edge Sm + TMC429_VT_CYCLES = TMC429_PH_COMMIT(m)
+    // (rtl/tmc429_schedule.vh)
+    localparam [4:0] S0 = `TMC429_PH_SNAPSHOT(0);
+    localparam [4:0] S1 = `TMC429_PH_SNAPSHOT(1);
+    localparam [4:0] S2 = `TMC429_PH_SNAPSHOT(2);
     always @(*) begin
         n_a_snap = 1'b0; n_a_c = 1'b0; n_a_mul = 1'b0; n_b_load = 1'b0; n_b_run = 1'b0;
         n_c_out = 3'd0; n_a_m = 2'd0; n_b_k = 3'd0;
         case (phase_nx)
-        5'd0:  begin n_a_snap = 1'b1; n_a_m = 2'd0; end
-        5'd7:  begin n_a_snap = 1'b1; n_a_m = 2'd1; end
-        5'd14: begin n_a_snap = 1'b1; n_a_m = 2'd2; end
-        5'd1, 5'd8, 5'd15: n_a_c = 1'b1;
-        5'd2, 5'd3, 5'd4, 5'd5, 5'd6, 5'd9, 5'd10, 5'd11, 5'd12, 5'd13,
-        5'd16, 5'd17, 5'd18, 5'd19, 5'd20: n_a_mul = 1'b1;
+        S0: begin n_a_snap = 1'b1; n_a_m = 2'd0; end
+        S1: begin n_a_snap = 1'b1; n_a_m = 2'd1; end
+        S2: begin n_a_snap = 1'b1; n_a_m = 2'd2; end
+        S0 + 5'd1, S1 + 5'd1, S2 + 5'd1: n_a_c = 1'b1;
+        S0 + 5'd2, S0 + 5'd3, S0 + 5'd4, S0 + 5'd5, S0 + 5'd6, S1 + 5'd2, S1 + 5'd3, S1 + 5'd4,
+        S1 + 5'd5, S1 + 5'd6, S2 + 5'd2, S2 + 5'd3, S2 + 5'd4, S2 + 5'd5, S2 + 5'd6: n_a_mul = 1'b1;
         default: ;
         endcase
         case (phase_nx)
-        5'd7, 5'd14, 5'd21:  begin n_b_load = 1'b1; n_b_run = 1'b1; n_b_k = 3'd0; end
-        5'd8, 5'd15, 5'd22:  begin n_b_run = 1'b1; n_b_k = 3'd1; end
-        5'd9, 5'd16, 5'd23:  begin n_b_run = 1'b1; n_b_k = 3'd2; end
-        5'd10, 5'd17, 5'd24: begin n_b_run = 1'b1; n_b_k = 3'd3; end
-        5'd11, 5'd18, 5'd25: begin n_b_run = 1'b1; n_b_k = 3'd4; end
-        5'd12, 5'd19, 5'd26: begin n_b_run = 1'b1; n_b_k = 3'd5; end
-        5'd13, 5'd20, 5'd27: begin n_b_run = 1'b1; n_b_k = 3'd6; end
+        S0 + 5'd7, S1 + 5'd7, S2 + 5'd7:    begin n_b_load = 1'b1; n_b_run = 1'b1; n_b_k = 3'd0; end
+        S0 + 5'd8, S1 + 5'd8, S2 + 5'd8:    begin n_b_run = 1'b1; n_b_k = 3'd1; end
+        S0 + 5'd9, S1 + 5'd9, S2 + 5'd9:    begin n_b_run = 1'b1; n_b_k = 3'd2; end
+        S0 + 5'd10, S1 + 5'd10, S2 + 5'd10: begin n_b_run = 1'b1; n_b_k = 3'd3; end
+        S0 + 5'd11, S1 + 5'd11, S2 + 5'd11: begin n_b_run = 1'b1; n_b_k = 3'd4; end
+        S0 + 5'd12, S1 + 5'd12, S2 + 5'd12: begin n_b_run = 1'b1; n_b_k = 3'd5; end
+        S0 + 5'd13, S1 + 5'd13, S2 + 5'd13: begin n_b_run = 1'b1; n_b_k = 3'd6; end
         default: ;
         endcase
         case (phase_nx)
-        5'd14: n_c_out = 3'b001;
-        5'd21: n_c_out = 3'b010;
-        5'd28: n_c_out = 3'b100;
+        `TMC429_PH_COMMIT(0): n_c_out = 3'b001;
+        `TMC429_PH_COMMIT(1): n_c_out = 3'b010;
+        `TMC429_PH_COMMIT(2): n_c_out = 3'b100;
         default: ;
         endcase
     end

@@ -19,7 +19,7 @@ struct Cli {
 enum Command {
     /// Drive the virtual chip through its SPI pins from a datagram script.
     Spi(cmd::spi::Args),
-    /// Print the register map (Markdown, C header or JSON).
+    /// Print the register map (Markdown, C header, JSON, the sigrok table, the RTL's headers).
     Regmap(cmd::regmap::Args),
     /// Run the golden model and the Verilated RTL in lock-step on random stimulus.
     Cosim(cmd::cosim::Args),

@@ -65,8 +65,10 @@ fn main() {
     for s in &sources {
         println!("cargo:rerun-if-changed={}", s.display());
     }
-    // the register map the sources include (`include "tmc429_regmap.vh"`, found through -I)
+    // the register map and the frame schedule the sources include (`include "tmc429_regmap.vh"`,
+    // `include "tmc429_schedule.vh"`, found through -I)
     println!("cargo:rerun-if-changed={}", rtl_dir.join("tmc429_regmap.vh").display());
+    println!("cargo:rerun-if-changed={}", rtl_dir.join("tmc429_schedule.vh").display());
     println!("cargo:rerun-if-changed=cpp/rtl_bridge.h");
     println!("cargo:rerun-if-changed=cpp/rtl_bridge.cc");
     println!("cargo:rerun-if-changed=src/rtl.rs");

@@ -112,6 +112,21 @@ fn regmap_verilog_is_the_rtl_header() {
     assert!(vh.contains("\n`define TMC429_F_PULSE_DIV 15:12 "));
 }
 
+/// rtl/tmc429_schedule.vh is the generated frame schedule header, byte for byte, with the
+/// contract's lanes (C41: motor 1's ramp tick at phase 23, motor 2's commit at 28).
+#[test]
+fn regmap_verilog_schedule_is_the_rtl_header() {
+    let o = tmc429(&["regmap", "--format", "verilog-schedule"], "");
+    assert!(o.status.success());
+    let vh = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/rtl/tmc429_schedule.vh")).unwrap();
+    assert!(
+        text(&o.stdout) == vh,
+        "rtl/tmc429_schedule.vh is stale: run `tmc429 regmap --format verilog-schedule > rtl/tmc429_schedule.vh`"
+    );
+    assert!(vh.contains("\n`define TMC429_PH_RAMP(m) ((m) == 0 ? 5'd16 : (m) == 1 ? 5'd23 : 5'd30) "));
+    assert!(vh.contains("\n`define TMC429_PH_COMMIT(m) ((m) == 0 ? 5'd14 : (m) == 1 ? 5'd21 : 5'd28) "));
+}
+
 #[test]
 fn regmap_c_and_json() {
     let c = text(&tmc429(&["regmap", "--format", "c"], "").stdout);

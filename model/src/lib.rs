@@ -23,6 +23,7 @@ pub mod regmap_render;
 pub mod regmap_sigrok;
 pub mod regmap_verilog;
 pub mod schedule;
+pub mod schedule_verilog;
 pub mod script;
 pub mod spi_slave;
 pub mod stepdir;

@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use tmc429_model::{regmap_render, regmap_sigrok, regmap_verilog};
+use tmc429_model::{regmap_render, regmap_sigrok, regmap_verilog, schedule_verilog};
 
 use crate::{Outcome, UserError};
 
@@ -15,6 +15,8 @@ pub enum Format {
     Sigrok,
     /// The Verilog header of the RTL's register decode (rtl/tmc429_regmap.vh).
     Verilog,
+    /// The Verilog header of the RTL's frame schedule slots (rtl/tmc429_schedule.vh).
+    VerilogSchedule,
 }
 
 #[derive(clap::Args)]
@@ -31,6 +33,7 @@ pub fn run(a: Args) -> Result<Outcome, UserError> {
         Format::Json => regmap_render::json(),
         Format::Sigrok => regmap_sigrok::python(),
         Format::Verilog => regmap_verilog::header(),
+        Format::VerilogSchedule => schedule_verilog::header(),
     };
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()) {

@@ -111,7 +111,7 @@ def _first_lines(text: str, n: int = 12) -> str:
 
 
 def include_dirs(sources: Sequence[Path]) -> List[Path]:
-    """The directories of the sources, where an `include (rtl/tmc429_regmap.vh) is found."""
+    """The directories of the sources, where an `include (rtl/tmc429_regmap.vh, rtl/tmc429_schedule.vh) is found."""
     return sorted({s.resolve().parent for s in sources})
 
 
