@@ -76,8 +76,8 @@ module tmc429_vtarget #(
     wire [4:0] phase_nx = phase + {4'd0, run};
     // motor m's stages from its snapshot phase Sm = TMC429_PH_SNAPSHOT(m): A at Sm (snapshot),
     // Sm + 1 (c), Sm + 2 .. Sm + 6 (multiply); B at Sm + 7 .. Sm + 13 (k = 0 .. 6, the load at
-    // k = 0); C in the commit edge Sm + TMC429_VT_CYCLES = TMC429_PH_COMMIT(m)
-    // (rtl/tmc429_schedule.vh)
+    // k = 0); C in the commit edge Sm + 14 = TMC429_PH_COMMIT(m) (rtl/tmc429_schedule.vh; the
+    // model's lanes are tested to have this shape)
     localparam [4:0] S0 = `TMC429_PH_SNAPSHOT(0);
     localparam [4:0] S1 = `TMC429_PH_SNAPSHOT(1);
     localparam [4:0] S2 = `TMC429_PH_SNAPSHOT(2);

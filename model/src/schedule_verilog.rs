@@ -4,9 +4,7 @@
 //! this rendering (docs/model-contract.md C41).
 //!
 //! Per slot, `TMC429_PH_<SLOT>(m)`: the phase of motor m's slot in the 32-cycle frame, a 5-bit
-//! constant for a constant m (a genvar or a loop index). The target-velocity unit's pipeline
-//! (`rtl/tmc429_vtarget.v`) runs from a motor's snapshot to its commit in
-//! `TMC429_VT_CYCLES` edges.
+//! constant for a constant m (a genvar or a localparam).
 
 use std::fmt::Write;
 
@@ -15,10 +13,11 @@ use crate::schedule::{PHASE_COMMIT, PHASE_PULSE, PHASE_RAMP, PHASE_SNAPSHOT};
 /// The command that writes the header.
 pub const REGENERATE: &str = "tmc429 regmap --format verilog-schedule > rtl/tmc429_schedule.vh";
 
-/// The cycles from a motor's target snapshot to its commit: the stages of the target-velocity
-/// unit (snapshot, c, five multiply cycles, seven square-root cycles; the clamp in the commit
-/// edge), the same for every lane.
-pub const VT_CYCLES: u32 = PHASE_COMMIT[0] - PHASE_SNAPSHOT[0];
+/// The edges from a motor's target snapshot to its commit that the target-velocity unit's stages
+/// take (`rtl/tmc429_vtarget.v`: snapshot, c, five multiply cycles; seven square-root cycles; the
+/// clamp in the commit edge). Its stages are decoded from the snapshot phase, so every lane must
+/// commit this many edges after its snapshot.
+pub const VT_CYCLES: u32 = 14;
 
 /// `((m) == 0 ? 5'dP0 : (m) == 1 ? 5'dP1 : 5'dP2)`.
 fn per_motor(p: &[u32; 3]) -> String {
@@ -43,7 +42,6 @@ pub fn header() -> String {
     define(&mut s, "TMC429_PH_COMMIT(m)", &per_motor(&PHASE_COMMIT), "motor m's target velocity committed in this edge");
     define(&mut s, "TMC429_PH_RAMP(m)", &per_motor(&PHASE_RAMP), "motor m's ramp tick in a ramp frame");
     define(&mut s, "TMC429_PH_PULSE(m)", &per_motor(&PHASE_PULSE), "motor m's pulse tick in a pulse frame");
-    define(&mut s, "TMC429_VT_CYCLES", &VT_CYCLES.to_string(), "edges from a snapshot to its commit");
     s += "\n`endif // TMC429_SCHEDULE_VH\n";
     s
 }
@@ -66,11 +64,10 @@ mod tests {
         assert_eq!(value(&h, "TMC429_PH_COMMIT(m)"), Some("((m) == 0 ? 5'd14 : (m) == 1 ? 5'd21 : 5'd28)"));
         assert_eq!(value(&h, "TMC429_PH_RAMP(m)"), Some("((m) == 0 ? 5'd16 : (m) == 1 ? 5'd23 : 5'd30)"));
         assert_eq!(value(&h, "TMC429_PH_PULSE(m)"), Some("((m) == 0 ? 5'd17 : (m) == 1 ? 5'd24 : 5'd31)"));
-        assert_eq!(value(&h, "TMC429_VT_CYCLES"), Some("14"));
     }
 
-    /// The RTL's pipelines rest on the lanes' shape: every lane the same distance from its
-    /// snapshot to its commit (the target-velocity unit's stages), and the ramp tick's operands,
+    /// The RTL's pipelines rest on the lanes' shape: every lane VT_CYCLES from its snapshot to
+    /// its commit (the target-velocity unit's stages), and the ramp tick's operands,
     /// registered in the edge before the tick (`rtl/tmc429_accel.v`), take a target committed
     /// in an earlier edge.
     #[test]
