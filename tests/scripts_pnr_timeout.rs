@@ -1,0 +1,60 @@
+//! The place-and-route sweeps of `scripts/fpga` and `scripts/rtl-report` bound each nextpnr run
+//! (`--pnr-timeout`, docs/fpga.md, docs/rtl.md): nextpnr's router does not give up on a
+//! placement it cannot route, so a run past its time is stopped, its seed's entry says so, and no
+//! bitstream is left behind. Each test synthesizes the TMC4210 (Yosys, about 20 s) and gives
+//! nextpnr one second, far less than its placement takes.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("tmc429-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn script(name: &str, args: &[&str]) -> Output {
+    Command::new(root().join("scripts").join(name)).args(args).output().unwrap()
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+#[test]
+fn fpga_stops_a_place_and_route_past_its_time_and_keeps_no_bitstream() {
+    let out = scratch("fpga-timeout");
+    // a bitstream of an earlier run in the same directory
+    std::fs::write(out.join("icebreaker-tmc4210.bin"), b"old").unwrap();
+    let o = script("fpga", &["--chip", "tmc4210", "--seeds", "1 2", "--pnr-timeout", "1", "--out", out.to_str().unwrap()]);
+    let stdout = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "stdout:\n{stdout}\nstderr:\n{}", text(&o.stderr));
+    assert!(stdout.contains("1: stopped after 1 s, 2: stopped after 1 s (no placement finished in time)"), "stdout:\n{stdout}");
+    assert!(!out.join("icebreaker-tmc4210.bin").exists(), "the earlier bitstream is removed");
+    std::fs::remove_dir_all(&out).ok();
+}
+
+#[test]
+fn rtl_report_stops_a_place_and_route_past_its_time() {
+    let o = script("rtl-report", &["--flow", "plain", "--chip", "tmc4210", "--seeds", "1", "--pnr-timeout", "1"]);
+    let stdout = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "stdout:\n{stdout}\nstderr:\n{}", text(&o.stderr));
+    assert!(stdout.contains("stopped after 1 s; no placement finished in time"), "stdout:\n{stdout}");
+}
+
+#[test]
+fn a_timeout_that_is_not_a_number_of_seconds_is_refused() {
+    for name in ["fpga", "rtl-report"] {
+        for bad in ["0", "10m", ""] {
+            let o = script(name, &["--pnr-timeout", bad]);
+            assert_eq!(o.status.code(), Some(2), "{name} --pnr-timeout '{bad}'");
+            let err = text(&o.stderr);
+            assert!(err.contains(&format!("{name}: --pnr-timeout takes a number of seconds above 0, not '{bad}'")), "{name}: {err}");
+        }
+    }
+}
