@@ -77,7 +77,9 @@ fn bits(mask: u64) -> String {
     }
 }
 
-fn define(s: &mut String, name: &str, value: &str, comment: &str) {
+/// One `` `define NAME VALUE `` line, with its comment after it (also the schedule header's,
+/// [`crate::schedule_verilog`]).
+pub(crate) fn define(s: &mut String, name: &str, value: &str, comment: &str) {
     let line = format!("`define {name} {value}");
     if comment.is_empty() {
         s.push_str(&line);
@@ -164,14 +166,17 @@ pub fn header() -> String {
     s
 }
 
+/// The value of `` `define NAME `` in a rendered header, without its comment.
+#[cfg(test)]
+pub(crate) fn define_value<'a>(h: &'a str, name: &str) -> Option<&'a str> {
+    let key = format!("`define {name} ");
+    h.lines().find_map(|l| l.strip_prefix(&key)).map(|v| v.split("//").next().unwrap().trim())
+}
+
 #[cfg(test)]
 mod tests {
+    use super::define_value as value;
     use super::*;
-
-    fn value<'a>(h: &'a str, name: &str) -> Option<&'a str> {
-        let key = format!("`define {name} ");
-        h.lines().find_map(|l| l.strip_prefix(&key)).map(|v| v.split("//").next().unwrap().trim())
-    }
 
     /// TMC428 Table 7-2, §8.14, §9.7; TMC429 §8.2.4, §8.2.4.4; TMC4210 §5.3.
     #[test]

@@ -6,8 +6,7 @@
 //! Per slot, `TMC429_PH_<SLOT>(m)`: the phase of motor m's slot in the 32-cycle frame, a 5-bit
 //! constant for a constant m (a genvar or a localparam).
 
-use std::fmt::Write;
-
+use crate::regmap_verilog::define;
 use crate::schedule::{PHASE_COMMIT, PHASE_PULSE, PHASE_RAMP, PHASE_SNAPSHOT};
 
 /// The command that writes the header.
@@ -22,11 +21,6 @@ pub const VT_CYCLES: u32 = 14;
 /// `((m) == 0 ? 5'dP0 : (m) == 1 ? 5'dP1 : 5'dP2)`.
 fn per_motor(p: &[u32; 3]) -> String {
     format!("((m) == 0 ? 5'd{} : (m) == 1 ? 5'd{} : 5'd{})", p[0], p[1], p[2])
-}
-
-fn define(s: &mut String, name: &str, value: &str, comment: &str) {
-    let head = format!("`define {name} {value}");
-    let _ = writeln!(s, "{head:<60} // {comment}");
 }
 
 /// The header `rtl/tmc429_schedule.vh`.
@@ -49,11 +43,7 @@ pub fn header() -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn value<'a>(h: &'a str, name: &str) -> Option<&'a str> {
-        let key = format!("`define {name} ");
-        h.lines().find_map(|l| l.strip_prefix(&key)).map(|v| v.split("//").next().unwrap().trim())
-    }
+    use crate::regmap_verilog::define_value as value;
 
     /// C41: motor m's target snapshot, commit, ramp tick and pulse tick at phases 7m, 7m + 14,
     /// 7m + 16, 7m + 17.

@@ -2,18 +2,14 @@
 //! rendering of `model/src/regmap.rs` (`tmc429 regmap --format verilog`), and no RTL source
 //! decodes an address or a register field with a number of its own.
 
-use std::path::{Path, PathBuf};
+mod common;
 
+use common::rtl::{self, starts_with_number};
 use tmc429_model::regmap_verilog;
-
-fn rtl_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../rtl")
-}
 
 #[test]
 fn the_rtl_header_is_the_register_map() {
-    let path = rtl_dir().join("tmc429_regmap.vh");
-    let file = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let file = rtl::header("tmc429_regmap.vh");
     assert!(file == regmap_verilog::header(), "rtl/tmc429_regmap.vh is stale: run `{}`", regmap_verilog::REGENERATE);
 }
 
@@ -53,10 +49,6 @@ fn after<'a>(code: &'a str, name: &'a str) -> impl Iterator<Item = &'a str> + 'a
         let rest = &code[i + name.len()..];
         (before_ok && !rest.starts_with(word)).then_some(rest)
     })
-}
-
-fn starts_with_number(s: &str) -> bool {
-    s.trim_start().starts_with(|c: char| c.is_ascii_digit())
 }
 
 /// A case label of numbers only (`4'd0:`, `4'd0, 4'd1:`).
@@ -103,17 +95,7 @@ fn literal_decodes(source: &str) -> Vec<(usize, String)> {
 
 #[test]
 fn the_rtl_decodes_through_the_header_names() {
-    let mut sources: Vec<PathBuf> =
-        std::fs::read_dir(rtl_dir()).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension().is_some_and(|x| x == "v")).collect();
-    sources.sort();
-    assert!(sources.len() > 10, "rtl/ holds the sources");
-    let mut bad = Vec::new();
-    for p in &sources {
-        let text = std::fs::read_to_string(p).unwrap();
-        for (n, line) in literal_decodes(&text) {
-            bad.push(format!("{}:{n}: {line}", p.display()));
-        }
-    }
+    let bad = rtl::lines_found(literal_decodes);
     assert!(bad.is_empty(), "register decode with a number instead of a name of rtl/tmc429_regmap.vh:\n{}", bad.join("\n"));
 }
 

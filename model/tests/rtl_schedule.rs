@@ -2,27 +2,19 @@
 //! `rtl/tmc429_schedule.vh` is the rendering of `model/src/schedule.rs` (`tmc429 regmap --format
 //! verilog-schedule`), and no RTL source decodes a phase of the frame with a number of its own.
 
-use std::path::{Path, PathBuf};
+mod common;
 
+use common::rtl::{self, starts_with_number};
 use tmc429_model::schedule_verilog;
-
-fn rtl_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../rtl")
-}
 
 #[test]
 fn the_rtl_header_is_the_frame_schedule() {
-    let path = rtl_dir().join("tmc429_schedule.vh");
-    let file = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let file = rtl::header("tmc429_schedule.vh");
     assert!(file == schedule_verilog::header(), "rtl/tmc429_schedule.vh is stale: run `{}`", schedule_verilog::REGENERATE);
 }
 
 /// Signals that carry the frame's phase (prescaler[4:0], or the phase after an edge).
 const PHASE_SIGNALS: &[&str] = &["ph", "phase", "phase_nx", "prescaler[4:0]"];
-
-fn starts_with_number(s: &str) -> bool {
-    s.trim_start().starts_with(|c: char| c.is_ascii_digit())
-}
 
 /// The lines of `text` that compare a phase signal with a number, or label a `case` on one with
 /// numbers: (line number from 1, the line).
@@ -58,17 +50,7 @@ fn literal_phases(text: &str) -> Vec<(usize, String)> {
 
 #[test]
 fn the_rtl_decodes_phases_through_the_header_names() {
-    let mut sources: Vec<PathBuf> =
-        std::fs::read_dir(rtl_dir()).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension().is_some_and(|x| x == "v")).collect();
-    sources.sort();
-    assert!(sources.len() > 10, "rtl/ holds the sources");
-    let mut bad = Vec::new();
-    for p in &sources {
-        let text = std::fs::read_to_string(p).unwrap();
-        for (n, line) in literal_phases(&text) {
-            bad.push(format!("{}:{n}: {line}", p.display()));
-        }
-    }
+    let bad = rtl::lines_found(literal_phases);
     assert!(bad.is_empty(), "frame phase with a number instead of a name of rtl/tmc429_schedule.vh:\n{}", bad.join("\n"));
 }
 

@@ -6,6 +6,7 @@ use tmc429_model::regmap::{global_a7, motor_a7};
 use tmc429_model::Chip;
 
 pub mod frames;
+pub mod rtl;
 
 pub use tmc429_model::regmap::idx::*;
 /// Short name of idx::CURRENT_SCALING.
