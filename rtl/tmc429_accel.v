@@ -5,7 +5,8 @@
 // one motor ramps in a cycle. Its operands are registered in the edge before its ramp tick
 // (`ld`, one-hot: the next cycle is motor m's ramp phase), from the state they have after that
 // edge: V as it holds without a tick (`v_hold` of tmc429_ramp: µC write, stop_hard), the
-// soft stop action's next state, a_max with a µC write of that edge, and the committed target
+// registered soft stop action (set only in the motor's condition slot, phase 7m, never the
+// edge before its ramp tick), a_max with a µC write of that edge, and the committed target
 // vt (committed at phase 7m + 14, stable in that edge); T is registered with the soft stop
 // applied. So the tick's arithmetic starts at flip-flops; the motor's tmc429_ramp loads the
 // results in its ramp tick:
@@ -26,7 +27,7 @@ module tmc429_accel #(
     // per-motor operands after this edge, motor m in bits [w*(m+1)-1 : w*m]
     input  wire [59:0] v_hold,     // V unless its tick loads it, 1/256 units, two's complement
     input  wire [35:0] vt,         // committed target velocity (tmc429_vtarget)
-    input  wire [2:0]  stop_soft_nx, // soft stop action (C61) after this edge
+    input  wire [2:0]  stop_soft,  // soft stop action (C61), which this edge does not change
     input  wire [32:0] a_max,      // a_max before this edge ...
     input  wire [2:0]  a_max_we,   // ... a µC write of motor m's a_max in this edge ...
     input  wire [10:0] a_max_wd,   // ... and its data
@@ -45,7 +46,7 @@ module tmc429_accel #(
         if (NMOT == 1) begin : one
             always @(*) begin
                 vs_n = v_hold[19:0];  am_n = a_max[10:0];  aw_n = a_max_we[0];
-                th_n = stop_soft_nx[0] ? 12'd0 : vt[11:0];
+                th_n = stop_soft[0] ? 12'd0 : vt[11:0];
             end
         end else begin : three
             integer m;
@@ -53,7 +54,7 @@ module tmc429_accel #(
                 vs_n = 20'd0;  th_n = 12'd0;  am_n = 11'd0;  aw_n = 1'b0;
                 for (m = 0; m < 3; m = m + 1) begin
                     vs_n = vs_n | (v_hold[20*m +: 20] & {20{ld[m]}});
-                    th_n = th_n | (vt[12*m +: 12] & {12{ld[m] & ~stop_soft_nx[m]}});
+                    th_n = th_n | (vt[12*m +: 12] & {12{ld[m] & ~stop_soft[m]}});
                     am_n = am_n | (a_max[11*m +: 11] & {11{ld[m]}});
                     aw_n = aw_n | (a_max_we[m] & ld[m]);
                 end

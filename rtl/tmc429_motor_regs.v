@@ -27,13 +27,14 @@ module tmc429_motor_regs #(
     output wire [23:0] rdata,
     input  wire        sw_l,      // mapped left switch (C60)
     input  wire        sw_r,      // mapped right switch
+    input  wire        cond_tick, // the motor's snapshot phase: its condition slot (C41)
     input  wire        ramp_tick, // ramp phase of a ramp frame (C40, C41)
     input  wire        pulse_tick,// pulse phase of a pulse frame
     input  wire [11:0] vt,        // committed target velocity (C41)
     // the ramp tick's operands and results (tmc429_accel, shared by the motors)
     output reg  [10:0] a_max,
     output wire [19:0] v_hold,    // V after this edge without a tick (tmc429_ramp)
-    output wire        stop_soft_nx,
+    output wire        stop_soft,
     input  wire [19:0] v_rmp,
     input  wire [11:0] a_rmp,
     input  wire        mc_rmp,
@@ -75,17 +76,17 @@ module tmc429_motor_regs #(
 
     // ---- ramp and pulse generator, switch stop, latch ------------------------------------
     tmc429_ramp #(.HAS_USTEP(HAS_USTEP)) u_ramp (
-        .clk(clk), .rst(rst), .run(run), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
+        .clk(clk), .rst(rst), .run(run), .cond_tick(cond_tick), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
         .rm(rm), .x_target(x_target), .v_min(v_min), .ref_conf(ref_conf),
         .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .tol_k(tol_k), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
         .we(we), .widx(widx), .wdata(wdata),
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
-        .v_hold(v_hold), .stop_soft_nx(stop_soft_nx),
+        .v_hold(v_hold), .stop_soft(stop_soft),
         .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .v_actual(v_actual));
 
-    // ---- interrupt conditions (C63), from the old state -------------------------------
+    // ---- interrupt conditions (C63), from the old state of the condition slot -----------
     wire        sel_sw   = ref_conf[`TMC429_F_REF_RNL - `TMC429_F_DISABLE_STOP_L] ? sw_r : sw_l;   // REF_RnL
     wire        x_ge_tol = ~tol_ok;                             // |x_actual| >= tolerance
     wire [7:0]  cond = {
@@ -98,7 +99,8 @@ module tmc429_motor_regs #(
         sel_sw & x_ge_tol,          // 1 REF_WRONG
         xeqt                        // 0 POS_END
     };
-    wire [7:0] events = run ? (cond & ~int_hist) : 8'd0;
+    wire       slot   = run & cond_tick;
+    wire [7:0] events = slot ? (cond & ~int_hist) : 8'd0;
 
     wire       w_int   = we & (widx == `TMC429_IDX_INTERRUPT);
     wire [7:0] mask_nx = w_int ? wdata[`TMC429_F_INTERRUPT_MASK] : int_mask;
@@ -122,7 +124,7 @@ module tmc429_motor_regs #(
             dx_ref_tolerance <= 12'd0;
             tol_k <= 13'd4096;
         end else begin
-            if (run)
+            if (slot)
                 int_hist <= cond;
             int_mask  <= mask_nx;
             int_flags <= ((int_flags & ~w1c) | events) & mask_nx;   // C3, C26

@@ -7,19 +7,22 @@
 // functions of its registers and inputs. The port list is the boundary at which test vectors of
 // the unit are taken (rtl/README.md).
 //
-// Per cycle with run = 1, from the old state:
+// In the motor's condition slot (cond_tick: its snapshot phase, every frame) with run = 1,
+// from the old state:
 //   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol, stop_R
 //                  symmetric; tol = |x_actual| < dx_ref_tolerance masks both switches
 //   stop flops     stop_hard := at_stop (RAMP/SOFT, x_actual = x_target, |V|>>8 <= v_min, C52)
 //                  | (stop & !SOFT_STOP); stop_soft := stop & SOFT_STOP (C61): the conditions
-//                  of this cycle act in the next one
+//                  of the slot act from the next edge to the next slot's
+//   latch (C62)    lp & V_ACTUAL != 0 & selected switch changed since the last slot:
+//                  x_latched := x_actual, lp := 0
+// Per cycle with run = 1, from the old state:
 //   ramp tick      (ramp_tick, rm != HOLD) V, a_actual := the results of tmc429_accel, which
 //                  moves V toward T = 256*vt (0 while stop_soft) by at most a_max, shared by
 //                  the three motors; RAMP/SOFT: v_target := vt (C51)
 //   V := 0         while stop_hard; wins over the ramp tick (C3)
 //   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is one
 //                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
-//   latch (C62)    lp & V_ACTUAL != 0 & selected switch changed: x_latched := x_actual, lp := 0
 // µC writes (we, widx, wdata; any run level) take priority over all of these (C3); register
 // indices and fields: rtl/tmc429_regmap.vh.
 `default_nettype none
@@ -31,6 +34,7 @@ module tmc429_ramp #(
     input  wire        clk,
     input  wire        rst,
     input  wire        run,        // 0 while powered down (C66)
+    input  wire        cond_tick,  // phase 7m, motor m's snapshot: its condition slot (C41)
     input  wire        ramp_tick,  // phase 16 + 7m of a ramp frame of this motor m (C40, C41)
     input  wire        pulse_tick, // phase 17 + 7m of a pulse frame of this motor
     // registers of the motor (old state)
@@ -63,11 +67,11 @@ module tmc429_ramp #(
     output reg         dir,        // direction of the last step (1 = negative)
     output reg  [23:0] x_latched,
     output reg         lp,
-    // what V and the registered soft stop action hold after this edge unless the ramp tick
-    // loads V: the next state the shared tick unit takes its operands from (tmc429_accel, in
-    // the edge before the tick)
+    // what V holds after this edge unless the ramp tick loads V, and the registered soft stop
+    // action: the operands the shared tick unit takes in the edge before the tick
+    // (tmc429_accel; that edge is never the condition slot, so stop_soft then holds)
     output wire [19:0] v_hold,
-    output wire        stop_soft_nx,
+    output reg         stop_soft,  // registered soft stop action (C61)
     // conditions of the old state
     output wire        xeqt,       // x_actual == x_target
     output wire        stop,       // switch stop condition (STOP interrupt, C63)
@@ -76,7 +80,6 @@ module tmc429_ramp #(
 );
     reg ref_prev;
     reg stop_hard;                   // registered hard stop action (C52, C61)
-    reg stop_soft;                   // registered soft stop action (C61)
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -164,8 +167,6 @@ module tmc429_ramp #(
     assign v_hold       = w_va ? {w_v, 8'd0} : (zero_v ? 20'd0 : v);
     wire        mc_hold = w_va ? w_v[11] : (~zero_v & v_mc);
     wire        v_load  = run & tick & ~stop_hard & ~w_va;
-    wire        ss_nx   = stop & soft_sw;
-    assign stop_soft_nx = run ? ss_nx : stop_soft;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -175,12 +176,14 @@ module tmc429_ramp #(
             stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
         end else begin
             if (run) begin
-                ref_prev <= sel;
-                stop_hard <= at_stop | (stop & ~soft_sw);
-                stop_soft <= ss_nx;
-                if (lp & va_nz & (sel != ref_prev)) begin
-                    x_latched <= x_actual;
-                    lp <= 1'b0;
+                if (cond_tick) begin
+                    ref_prev <= sel;
+                    stop_hard <= at_stop | (stop & ~soft_sw);
+                    stop_soft <= stop & soft_sw;
+                    if (lp & va_nz & (sel != ref_prev)) begin
+                        x_latched <= x_actual;
+                        lp <= 1'b0;
+                    end
                 end
                 if (tick) begin
                     a_actual <= a_rmp;

@@ -120,8 +120,9 @@ module tmc429_regfile #(
 
     // ---- frame schedule (C40, C41) ----------------------------------------------------
     // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. Motor m's
-    // ramp tick is at phase TMC429_PH_RAMP(m), its pulse tick at TMC429_PH_PULSE(m)
-    // (rtl/tmc429_schedule.vh: 16 + 7m, 17 + 7m). The ticks are registers formed
+    // ramp tick is at phase TMC429_PH_RAMP(m), its pulse tick at TMC429_PH_PULSE(m), its
+    // condition slot at TMC429_PH_SNAPSHOT(m) of every frame (rtl/tmc429_schedule.vh:
+    // 16 + 7m, 17 + 7m, 7m; C52, C61-C63). The ticks are registers formed
     // one edge ahead: the phase after this edge is p + run, the frame changes only from phase
     // 31 to 0 (and not while powered down), and the divider after this edge is the one a µC
     // write of clk_config in this edge stores.
@@ -180,11 +181,11 @@ module tmc429_regfile #(
     wire [35:0] m_vt;
     wire [32:0] m_a_max;
     wire [59:0] m_v_hold;
-    wire [2:0]  m_stop_soft_nx, ph_ramp_ld, am_we;
+    wire [2:0]  m_stop_soft, ph_ramp_ld, am_we;
     wire [19:0] v_rmp;
     wire [11:0] a_rmp;
     wire        mc_rmp;
-    reg  [2:0]  ramp_tick, pulse_tick;
+    reg  [2:0]  ramp_tick, pulse_tick, cond_tick;
     wire [2:0]  ramp_tick_nx;
     assign drv_ramp_tick = ramp_tick;
     assign drv_ramp_tick_nx = ramp_tick_nx;
@@ -201,6 +202,7 @@ module tmc429_regfile #(
             wire p_due = w_div ? p_due_w : (ones_d >= m_pulse_div[4*g+3:4*g]);
             localparam [4:0] PH_RAMP = `TMC429_PH_RAMP(g);
             localparam [4:0] PH_PULSE = `TMC429_PH_PULSE(g);
+            localparam [4:0] PH_SNAPSHOT = `TMC429_PH_SNAPSHOT(g);
             wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
             assign ph_ramp_ld[g] = ph_ramp_nx;
             assign am_we[g] = we_m & (jdx == `TMC429_IDX_A_MAX);
@@ -210,9 +212,13 @@ module tmc429_regfile #(
                 if (rst) begin
                     ramp_tick[g] <= 1'b0;
                     pulse_tick[g] <= 1'b0;
+                    cond_tick[g] <= PH_SNAPSHOT == 5'd0;
                 end else begin
                     ramp_tick[g] <= ramp_tick_nx[g];
                     pulse_tick[g] <= ph_pulse_nx & p_due;
+                    // the condition slot: the snapshot phase of every frame, whether the core
+                    // runs in it or not (tmc429_ramp acts on it only with run)
+                    cond_tick[g] <= run ? (ph == PH_SNAPSHOT - 5'd1) : (ph == PH_SNAPSHOT);
                 end
             end
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
@@ -220,11 +226,12 @@ module tmc429_regfile #(
                 .we(we_m), .widx(jdx), .wdata(wdata),
                 .rsel(rq_idx), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
+                .cond_tick(cond_tick[g]),
                 .ramp_tick(ramp_tick[g]),
                 .pulse_tick(pulse_tick[g]),
                 .vt(m_vt[12*g+11:12*g]),
                 .a_max(m_a_max[11*g+10:11*g]), .v_hold(m_v_hold[20*g+19:20*g]),
-                .stop_soft_nx(m_stop_soft_nx[g]),
+                .stop_soft(m_stop_soft[g]),
                 .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
@@ -242,7 +249,7 @@ module tmc429_regfile #(
     // C51): its operands are registered in the edge into a motor's ramp phase
     tmc429_accel #(.NMOT(NMOT)) u_accel (
         .clk(clk), .rst(rst), .ld(ph_ramp_ld),
-        .v_hold(m_v_hold), .vt(m_vt), .stop_soft_nx(m_stop_soft_nx), .a_max(m_a_max),
+        .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft), .a_max(m_a_max),
         .a_max_we(am_we), .a_max_wd(wdata[`TMC429_F_A_MAX]),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
 

@@ -598,8 +598,9 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
     let cycles: usize = meta(&stem, "cycles").parse().unwrap();
     assert_eq!((lines.len(), cycles % 3), (cycles, 0));
     let per = cycles / 3;
-    // word bits: A 251..248 | inputs 247..134 (rst 247, we 162, widx 161..158, wdata 157..134)
-    // | outputs 133..5 (x_actual 133..110, v 109..90, xeqt 19, stop 18) | _check 4..0
+    // word bits: _sentinel 251..248 | inputs 247..133 (rst 247, cond_tick 245, we 161,
+    // widx 160..157, wdata 156..133) | outputs 132..4 (x_actual 132..109, v 108..89, xeqt 18,
+    // stop 17) | _check 3..0
     let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
     let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
     for m in 0..3 {
@@ -607,18 +608,19 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
         assert_eq!(field(lines[m * per + 1], 247, 1), 0);
     }
     let m0 = &lines[..per];
-    // the switch stop holds while REF1 is high and motor 0 moves left; V is then 0
-    let s = m0.iter().position(|l| field(l, 18, 1) == 1).expect("a switch stop");
-    assert_eq!(field(m0[s + 1], 90, 20), 0);
+    // the switch stop holds while REF1 is high and motor 0 moves left; taken in the motor's
+    // condition slot (C52, C61), V is 0 after it
+    let s = m0.iter().position(|l| field(l, 17, 1) == 1 && field(l, 245, 1) == 1).expect("a switch stop");
+    assert_eq!(field(m0[s + 1], 89, 20), 0);
     // the µC write x_actual := 0 (IDX 1) is executed in its edge
-    let z = m0.iter().position(|l| field(l, 162, 1) == 1 && field(l, 158, 4) == 1).expect("x_actual write");
+    let z = m0.iter().position(|l| field(l, 161, 1) == 1 && field(l, 157, 4) == 1).expect("x_actual write");
     assert!(z > s);
-    assert_eq!((field(m0[z], 134, 24), field(m0[z], 110, 24)), (0, 0));
+    assert_eq!((field(m0[z], 133, 24), field(m0[z], 109, 24)), (0, 0));
     // the move ends on x_target = 40 with V = 0
     let last = m0[per - 1];
-    assert_eq!((field(last, 110, 24), field(last, 90, 20), field(last, 19, 1)), (40, 0, 1));
+    assert_eq!((field(last, 109, 24), field(last, 89, 20), field(last, 18, 1)), (40, 0, 1));
     // motor 1 holds at 0 all along
-    assert!(lines[per..2 * per].iter().all(|l| field(l, 110, 24) == 0 && field(l, 90, 20) == 0));
+    assert!(lines[per..2 * per].iter().all(|l| field(l, 109, 24) == 0 && field(l, 89, 20) == 0));
 
     let vvp = dir.join("tb_ramp.vvp");
     let o = Command::new("iverilog")
@@ -637,17 +639,17 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
     let out = replay(&vvp, &stem, None);
     assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
 
-    // flip `stop` (word bit 18: bit 2 of digit 58) of the line s + 1 of motor 1's lines, and the
+    // flip `stop` (word bit 17: bit 1 of digit 58) of the line s + 1 of motor 1's lines, and the
     // same bit of the check digit (62)
     let k = per + s + 1;
     let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
     let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
     let b: Vec<char> = bad[k].chars().collect();
     let mut c = b.clone();
-    c[58] = flip(b[58] as u8, 4);
-    c[62] = flip(b[62] as u8, 4);
+    c[58] = flip(b[58] as u8, 2);
+    c[62] = flip(b[62] as u8, 2);
     bad[k] = c.into_iter().collect();
-    let was = field(lines[k], 18, 1);
+    let was = field(lines[k], 17, 1);
     let planted = dir.join("planted.hex");
     std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
     let out = replay(&vvp, &stem, Some(&planted));

@@ -124,9 +124,12 @@ fn int_events_from_a_reference_switch() {
         assert!(drain(h).is_empty());
         let c0 = cycle(h);
         assert_eq!(tmc429_set_pin(h, TMC429_PIN_REF1, 1), TMC429_OK);
-        tmc429_advance_cycles(h, 10);
-        // Two synchronizer flops, then the motion core samples: the flag is set at edge c0 + 3.
-        assert_eq!(drain(h), vec![format!("int {} 1", c0 + 3)]);
+        tmc429_advance_cycles(h, 40);
+        // Two synchronizer flops, then the switch is in the old state from edge c0 + 3 on; the
+        // motion core takes it in motor 1's condition slot, the edge of phase 0 (C52, C63): with
+        // no power down the pre-divider before edge k (counted from 1) is k - 1.
+        let slot = (c0 + 3..).find(|k| (k - 1) % 32 == 0).unwrap();
+        assert_eq!(drain(h), vec![format!("int {slot} 1")]);
         let mut st = 0u8;
         assert_eq!(tmc429_get_status(h, &mut st), TMC429_OK);
         assert_eq!(st, 0x97, "INT, RS1, xEQt1..3");
@@ -153,12 +156,12 @@ fn int_events_from_a_reference_switch() {
         let mut d = 1u64;
         assert_eq!(tmc429_events_dropped(h, &mut d), TMC429_OK);
         assert_eq!(d, 0);
-        // With decoding off nothing is queued.
+        // With decoding off nothing is queued (each level held over a condition slot).
         assert_eq!(tmc429_events_enable(h, 0), TMC429_OK);
         tmc429_set_pin(h, TMC429_PIN_REF1, 0);
-        tmc429_advance_cycles(h, 10);
+        tmc429_advance_cycles(h, 40);
         tmc429_set_pin(h, TMC429_PIN_REF1, 1);
-        tmc429_advance_cycles(h, 10);
+        tmc429_advance_cycles(h, 40);
         assert_eq!(tmc429_events_pending(h, &mut p), TMC429_OK);
         assert_eq!(p, 0);
         // On again: the decoder restarts and reports the INT that is high.

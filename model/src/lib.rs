@@ -263,6 +263,7 @@ impl Tmc429 {
         };
         ramp::RampInputs {
             run: !self.power_down,
+            cond_tick: schedule::cond_tick(self.prescaler, m),
             ramp_tick: schedule::ramp_tick(self.prescaler, m, mo.ramp_div),
             pulse_tick: schedule::pulse_tick(self.prescaler, m, mo.pulse_div),
             rm: mo.rm,
@@ -375,8 +376,9 @@ impl Tmc429 {
 
     /// Fast path, exactly equivalent to the full edge (tests/fast_path.rs): the pins are settled
     /// in the synchronizers (no SPI edge in flight, no switch change), the motion core is quiet,
-    /// and this phase of the frame has nothing to do: no snapshot that changes a target, no ramp
-    /// tick, no pulse tick that adds to an accumulator. Then the edge only advances the counters.
+    /// and this phase of the frame has nothing to do: no condition slot of a motor (C52, C61–C63:
+    /// its snapshot phase), no snapshot that changes a target, no ramp tick, no pulse tick that
+    /// adds to an accumulator. Then the edge only advances the counters.
     #[inline]
     fn idle_edge(&self, pins: u16) -> bool {
         if !(self.fast_path
@@ -396,6 +398,9 @@ impl Tmc429 {
             Some(i) if i < n => self.motors[i].rm == HOLD_MODE || !schedule::due(c, self.motors[i].ramp_div),
             _ => true,
         };
+        if schedule::lane_of(&PHASE_SNAPSHOT, p).is_some_and(|i| i < n) {
+            return false;
+        }
         let pulse = match schedule::lane_of(&PHASE_PULSE, p) {
             Some(i) if i < n => !schedule::due(c, self.motors[i].pulse_div) || self.motors[i].v.unsigned_abs() < 256,
             _ => true,
@@ -518,9 +523,10 @@ impl Tmc429 {
             // The ramp and pulse generator uses the committed target of the old state (C41).
             let vt = m.vt;
             vtarget::edge(m, i, schedule::phase(c));
+            let cond_tick = schedule::cond_tick(c, i);
             let ramp_tick = schedule::ramp_tick(c, i, m.ramp_div);
             let pulse_tick = schedule::pulse_tick(c, i, m.pulse_div);
-            events[i] = ramp::edge(m, vt, ramp_tick, pulse_tick, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
+            events[i] = ramp::edge(m, vt, cond_tick, ramp_tick, pulse_tick, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
         }
     }
 }

@@ -1,19 +1,56 @@
 //! One motor's ramp generator and pulse generator (`rtl/tmc429_ramp.v`): switch stop, stop at
-//! target, position latch, interrupt conditions, ramp tick and pulse tick (TMC428 §8.6–§8.16,
-//! TMC429 §8.1; docs/model-contract.md C42–C44, C51–C54, C61–C63, C3), with its port-level
-//! boundary for test vectors.
+//! target, position latch and interrupt conditions in the motor's condition slot, ramp tick and
+//! pulse tick (TMC428 §8.6–§8.16, TMC429 §8.1; docs/model-contract.md C42–C44, C51–C54,
+//! C61–C63, C3), with its port-level boundary for test vectors.
 
 use crate::accel;
 use crate::motor::*;
 
-/// One edge of motor `m`'s ramp and pulse generator from the old state (C1): the interrupt
-/// conditions and their rising edges (C63, returned), the latch (C62), the registered stop
-/// actions (C52, C61), the ramp tick (C51, with `ramp_tick` in any mode; HOLD_MODE makes
-/// none) and the pulse tick (C53). `vt` is the committed target velocity of the old state
-/// (C41), `l` and `r` the motor's switches after mapping (C60). The ramp tick's arithmetic is
-/// [`accel::tick`] (`rtl/tmc429_accel.v`, shared by the three motors).
+/// One edge of motor `m`'s ramp and pulse generator from the old state (C1): in the motor's
+/// condition slot (`cond_tick`, its snapshot phase, C41) the conditions of the switch stop,
+/// stop at target, latch and interrupts and their registered actions ([`conditions`]; the
+/// interrupt events are returned, 0 outside the slot); the ramp tick (C51, with `ramp_tick` in
+/// any mode; HOLD_MODE makes none) and the pulse tick (C53) under the stop actions of the old
+/// state. `vt` is the committed target velocity of the old state (C41), `l` and `r` the motor's
+/// switches after mapping (C60). The ramp tick's arithmetic is [`accel::tick`]
+/// (`rtl/tmc429_accel.v`, shared by the three motors).
 #[inline]
-pub fn edge(m: &mut Motor, vt: i32, ramp_tick: bool, pulse_tick: bool, l: bool, r: bool) -> u8 {
+pub fn edge(m: &mut Motor, vt: i32, cond_tick: bool, ramp_tick: bool, pulse_tick: bool, l: bool, r: bool) -> u8 {
+    let v_old = m.v;
+    // The stop actions of this edge are the registered conditions of the last slot (C52, C61).
+    let (stop_hard, stop_soft) = (m.stop_hard, m.stop_soft);
+    let events = if cond_tick { conditions(m, vt, l, r) } else { 0 };
+    if ramp_tick && m.rm != HOLD_MODE {
+        // The arithmetic is the unit shared by the motors' staggered ticks (C41).
+        let (v_new, a_actual) = accel::tick(v_old, vt, stop_soft, m.a_max);
+        m.a_actual = a_actual;
+        m.v = v_new;
+        if m.rm <= SOFT_MODE {
+            m.v_target = (vt as u32 & 0xFFF) as u16;
+        }
+    }
+    if stop_hard {
+        m.v = 0;
+    }
+    // Pulse tick (C53): velocity taken as 0 while the hard stop action holds.
+    m.step = false;
+    if pulse_tick {
+        let v_eff = if stop_hard { 0 } else { v_old };
+        let sum = m.acc + (v_eff.unsigned_abs() >> 8) as u16;
+        m.acc = sum & 0x7FF;
+        if sum > 0x7FF {
+            m.do_step(v_eff < 0);
+        }
+    }
+    events
+}
+
+/// The conditions of motor `m` in its condition slot, from the old state (C52, C61–C63): the
+/// interrupt conditions and their rising edges against the last slot's (C63, returned), the
+/// latch on a change of the selected switch since the last slot (C62), and the stop actions
+/// registered for the edges up to the next slot (C52, C61). `vt`, `l`, `r` as in [`edge`].
+#[inline]
+pub fn conditions(m: &mut Motor, vt: i32, l: bool, r: bool) -> u8 {
     let sel = if m.ref_conf & REF_RNL != 0 { r } else { l };
     // The tolerance window masks the stop of both switches (C61).
     let (tol_ok, stop) = switch_stop(m.x_actual, m.v, vt, m.ref_conf, m.dx_ref_tolerance, l, r);
@@ -40,34 +77,8 @@ pub fn edge(m: &mut Motor, vt: i32, ramp_tick: bool, pulse_tick: bool, l: bool, 
     }
     m.ref_prev = sel;
 
-    let v_old = m.v;
-    // The stop actions of this cycle are the registered conditions of the last one (C52,
-    // C61); the conditions of this cycle act in the next.
-    let (stop_hard, stop_soft) = (m.stop_hard, m.stop_soft);
     m.stop_hard = stop_at_target || (stop && !soft);
     m.stop_soft = stop && soft;
-    if ramp_tick && m.rm != HOLD_MODE {
-        // The arithmetic is the unit shared by the motors' staggered ticks (C41).
-        let (v_new, a_actual) = accel::tick(v_old, vt, stop_soft, m.a_max);
-        m.a_actual = a_actual;
-        m.v = v_new;
-        if m.rm <= SOFT_MODE {
-            m.v_target = (vt as u32 & 0xFFF) as u16;
-        }
-    }
-    if stop_hard {
-        m.v = 0;
-    }
-    // Pulse tick (C53): velocity taken as 0 while the hard stop action holds.
-    m.step = false;
-    if pulse_tick {
-        let v_eff = if stop_hard { 0 } else { v_old };
-        let sum = m.acc + (v_eff.unsigned_abs() >> 8) as u16;
-        m.acc = sum & 0x7FF;
-        if sum > 0x7FF {
-            m.do_step(v_eff < 0);
-        }
-    }
     events
 }
 
@@ -93,6 +104,8 @@ pub fn switch_stop(x_actual: u32, v: i32, vt: i32, ref_conf: u8, dx_ref_toleranc
 pub struct RampInputs {
     /// The motion core runs (not powered down, C66).
     pub run: bool,
+    /// The motor's condition slot, its snapshot phase 7·m of every frame (C41, C52, C61–C63).
+    pub cond_tick: bool,
     /// The motor's ramp phase 7·m + 16 of a frame F with F mod 2^ramp_div = 2^ramp_div − 1 (C40,
     /// C41); any ramp mode.
     pub ramp_tick: bool,

@@ -27,6 +27,8 @@ fn section_6_5_reply_with_int_set() {
     wr(&mut h, 0, INTERRUPT, 0x0100);
     wr(&mut h, 0, X_TARGET, 5);
     wr(&mut h, 0, X_TARGET, 0);
+    // the event is taken in motor 1's condition slot, within one 32-CLK frame (C63)
+    h.wait(32);
     assert_eq!(h.datagram(0x1A00_0123), 0x9500_0000);
     assert_eq!(h.datagram(0x1B00_0000), 0x9500_0123);
 }

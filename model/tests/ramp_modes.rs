@@ -84,11 +84,12 @@ fn soft_mode_ends_on_target() {
     assert_eq!(h.chip().motor(0).v, 0);
 }
 
-/// C52: the stop at target is registered. The step onto x_target (motor 0's pulse phase 17) makes the condition
-/// true in the old state of the next edge, which sets stop_hard and leaves V as it is; V := 0
-/// one edge later, and no further step follows.
+/// C52: the stop at target is evaluated in motor 0's condition slot (its snapshot phase 0) and
+/// registered. The step onto x_target (motor 0's pulse phase 17) leaves V as it is through the
+/// rest of the frame; the slot's edge sees the condition and sets stop_hard, V := 0 one edge
+/// later, and no further step follows (the next ramp and pulse ticks come after the slot).
 #[test]
-fn stop_at_target_acts_one_edge_later() {
+fn stop_at_target_acts_from_the_condition_slot() {
     let mut h = host(Chip::Tmc428);
     let p = tmc429_model::pmulpdiv::calc(100, 0, 0, 0.05).register_value().unwrap();
     motion_setup(&mut h, 0, 0, 0, 2, 2047, 100, p, 0);
@@ -107,9 +108,15 @@ fn stop_at_target_acts_one_edge_later() {
         "the step onto the target is made at motor 0's pulse phase"
     );
     assert!(m.v != 0 && m.v.unsigned_abs() >> 8 <= 2, "arrives at |v| <= v_min = 2, V moving: {}", m.v);
-    assert!(!m.stop_hard);
+    // phases 18..31: no slot of motor 0, nothing changes
+    for _ in (tmc429_model::PHASE_PULSE[0] + 1)..32 {
+        c.tick(&idle);
+        assert!(!c.motor(0).stop_hard);
+        assert_eq!(c.motor(0).v, m.v, "V untouched before the slot");
+    }
+    assert_eq!(c.probes().prescaler & 31, tmc429_model::PHASE_SNAPSHOT[0]);
     c.tick(&idle);
-    assert!(c.motor(0).stop_hard, "the condition of phase 0 is registered");
+    assert!(c.motor(0).stop_hard, "the condition of the slot (phase 0) is registered");
     assert_eq!(c.motor(0).v, m.v, "V is untouched in the edge that sees the condition");
     c.tick(&idle);
     assert_eq!(c.motor(0).v, 0, "V := 0 one edge later");

@@ -148,7 +148,8 @@ fn int_on_status_and_nint() {
     wr(&mut h, 2, INTERRUPT, 0x0100);
     wr(&mut h, 2, X_TARGET, 3);
     wr(&mut h, 2, X_TARGET, 0);
-    h.wait(4);
+    // the event is taken in motor 3's condition slot, within one 32-CLK frame (C63)
+    h.wait(32 + 4);
     assert!(!h.outputs().nint_sdo_c, "nINT low");
     assert_eq!(h.status(), 0x80 | 0x15);
     wr(&mut h, 2, INTERRUPT, 0x0101);

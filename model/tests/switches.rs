@@ -68,14 +68,24 @@ fn hard_stop_left() {
     h.wait(5000);
     assert_eq!(h.chip().motor(0).v_actual(), -1000);
     wr(&mut h, 0, INTERRUPT, 0xFFFF); // clear what happened so far
+    // Put the pin up 10 edges before motor 0's condition slot (its snapshot phase 0).
+    while h.chip().probes().prescaler & 31 != 32 - 10 {
+        h.wait(1);
+    }
     set_refs(&mut h, true, false, false);
-    // C4: the switch is in the old state of the 3rd edge; C61: the condition holds there and
-    // sets stop_hard; C52: V := 0 in the 4th.
-    h.wait(3);
-    assert!(h.chip().motor(0).stop_hard, "the condition of the 3rd edge is registered");
+    // C4: the switch is in the old state from the 3rd edge on; C61: it is not evaluated before
+    // the slot, which sets stop_hard; C52: V := 0 in the edge after the slot.
+    for _ in 0..10 {
+        h.wait(1);
+        assert!(!h.chip().motor(0).stop_hard, "no stop before the slot");
+        assert_eq!(h.chip().motor(0).v, -1000 * 256);
+    }
+    assert_eq!(h.chip().probes().prescaler & 31, tmc429_model::PHASE_SNAPSHOT[0]);
+    h.wait(1);
+    assert!(h.chip().motor(0).stop_hard, "the condition of the slot is registered");
     assert_eq!(h.chip().motor(0).v, -1000 * 256, "the action comes one edge later (C52)");
     h.wait(1);
-    assert_eq!(h.chip().motor(0).v, 0, "stopped 4 CLK after the pin (2 sync flops + condition + action)");
+    assert_eq!(h.chip().motor(0).v, 0, "stopped in the edge after the slot");
     let x = h.chip().motor(0).x_actual;
     h.wait(10_000);
     assert_eq!(h.chip().motor(0).x_actual, x, "held");
@@ -276,7 +286,8 @@ fn right_switch_interrupts() {
 
 /// C41 with C61: a snapshot acts only from its commit (motor 0: phase 14) on. Motor at V = 0 (a_max 0)
 /// on an active left switch in VELOCITY_MODE: a negative v_target makes vt < 0, which starts a
-/// stop condition — in the edge after the commit, not the cycle after the snapshot.
+/// stop condition — in motor 1's first condition slot (C61: its snapshot phase) after the commit,
+/// not the one of the snapshot that computes it.
 #[test]
 fn target_snapshot_acts_from_the_commit() {
     use tmc429_model::{Inputs, Tmc429, PHASE_COMMIT, PHASE_SNAPSHOT};
@@ -303,10 +314,55 @@ fn target_snapshot_acts_from_the_commit() {
         c.tick(&inp);
         assert_eq!(c.motor(0).int_flags & INT_STOP, 0, "no stop before the commit");
     }
-    c.tick(&inp); // commit edge: vt changes in its new state, the stop reads the old one
+    c.tick(&inp); // commit edge: vt changes in its new state
     assert_eq!(c.motor(0).vt, -50);
-    assert_eq!(c.motor(0).int_flags & INT_STOP, 0);
-    c.tick(&inp); // the edge after the commit: V = 0, vt < 0, left switch active: STOP
+    // the condition is evaluated in motor 1's next condition slot, its snapshot phase (C61)
+    while c.probes().prescaler & 31 != PHASE_SNAPSHOT[0] {
+        c.tick(&inp);
+        assert_eq!(c.motor(0).int_flags & INT_STOP, 0, "no stop before the slot");
+    }
+    c.tick(&inp); // the slot: V = 0, vt < 0, left switch active: STOP
     assert_eq!(c.motor(0).int_flags & INT_STOP, INT_STOP);
+    assert_eq!(c.motor(0).v, 0);
+}
+
+/// C52, C61, C63: the conditions are taken in the motor's condition slot only, so a switch level
+/// that comes and goes between two slots is not seen: no stop, no event; the same level held over
+/// a slot stops the motor in that slot's edge.
+#[test]
+fn a_switch_level_between_two_slots_is_not_seen() {
+    use tmc429_model::{Inputs, Tmc429, PHASE_SNAPSHOT};
+    let mut c = Tmc429::new(Chip::Tmc429);
+    let idle = Inputs::default();
+    let on = Inputs { ref1: true, ..Inputs::default() };
+    c.write_register(0x0B, 0xFF00); // all interrupts of motor 1 enabled
+    c.write_register(0x03, 2047); // v_max
+    c.write_register(0x05, (-100i32) as u32 & 0xFFF); // v_actual: moving left
+    c.write_register(0x0A, 3); // HOLD_MODE: V stays as written
+    while c.probes().prescaler & 31 != PHASE_SNAPSHOT[0] + 1 {
+        c.tick(&idle);
+    }
+    // REF1 high for 20 edges right after the slot: in the old state (two synchronizer flops, C4)
+    // from phase 3 to phase 22, back low before the next slot
+    for _ in 0..20 {
+        c.tick(&on);
+    }
+    for _ in 0..64 {
+        c.tick(&idle);
+    }
+    let m = c.motor(0);
+    assert_eq!((m.stop_hard, m.int_flags, m.v), (false, 0, -100 * 256), "not seen");
+    // held over the slot: stopped, STOP and STOP_LEFT_HIGH (REF_WRONG: outside a window of 0)
+    while c.probes().prescaler & 31 != (PHASE_SNAPSHOT[0] + 32 - 3) % 32 {
+        c.tick(&idle);
+    }
+    for _ in 0..3 {
+        c.tick(&on);
+    }
+    assert!(!c.motor(0).stop_hard);
+    c.tick(&on); // the slot
+    assert!(c.motor(0).stop_hard);
+    assert_eq!(c.motor(0).int_flags, INT_STOP | INT_STOP_LEFT_HIGH | INT_REF_WRONG);
+    c.tick(&on);
     assert_eq!(c.motor(0).v, 0);
 }

@@ -191,7 +191,8 @@ fn velocity_mode_reaches_v_target() {
 }
 
 /// C61, C62: a hard stop on the left switch while moving left, the latch armed by a write to
-/// x_latched takes x_actual at the switch edge.
+/// x_latched takes x_actual at the switch edge; both in motor 1's condition slot (its snapshot
+/// phase 0).
 #[test]
 fn hard_switch_stop_and_latch() {
     let mut c = Chip1::new(Chip::Tmc428);
@@ -202,16 +203,24 @@ fn hard_switch_stop_and_latch() {
     c.wait(5000);
     assert_eq!(c.rd(0, V_ACTUAL), (-1000i32) as u32 & 0xFFF);
     assert_eq!(c.rd(0, REF_CONF_RM) >> 16 & 1, 1, "lp armed");
+    // the pin goes up 10 edges before the slot; the switch is in the old state from the 3rd
+    // edge on (C4), but nothing acts on it before the slot
+    while c.rtl.probes().prescaler & 31 != 32 - 10 {
+        c.wait(1);
+    }
     c.ref1 = true;
-    c.wait(2);
-    // the 3rd edge sees the switch (C4): it latches x_actual of its old state (C62) and registers
-    // the stop condition (C61); V := 0 and no step from the 4th edge on (C52)
+    for _ in 0..10 {
+        c.wait(1);
+        assert_eq!(c.rtl.probes().motor[0].v_internal, -1000 * 256, "no stop before the slot");
+    }
+    // the slot's edge latches x_actual of its old state (C62) and registers the stop condition
+    // (C61); V := 0 and no step from the next edge on (C52)
     let x_edge = c.rtl.probes().motor[0].x_actual;
     c.wait(1);
     assert_eq!(c.rtl.probes().motor[0].v_internal, -1000 * 256, "the stop acts one edge after its condition (C52)");
     let x = c.rtl.probes().motor[0].x_actual;
     c.wait(1);
-    assert_eq!(c.rtl.probes().motor[0].v_internal, 0, "stopped 4 CLK after the pin (C4, C61, C52)");
+    assert_eq!(c.rtl.probes().motor[0].v_internal, 0, "stopped in the edge after the slot (C61, C52)");
     c.wait(10_000);
     assert_eq!(c.rd(0, X_ACTUAL), x, "held");
     assert_eq!(c.rd(0, X_LATCHED), x_edge, "latched at the edge");

@@ -11,7 +11,7 @@
 
 module tb_ramp;
     parameter CHIP = 1;
-    localparam W_IN  = 114;
+    localparam W_IN  = 115;
     localparam W_OUT = 129;
     localparam UNIT  = "ramp";
 
@@ -19,20 +19,20 @@ module tb_ramp;
 
     wire [19:0] v_rmp;
     wire [11:0] a_rmp;
-    wire        mc_rmp, stop_soft_nx;
+    wire        mc_rmp, stop_soft;
     wire [19:0] v_hold;
     // the operands are registered in the edge before the ramp tick: the next line's ramp
-    // tick, vt and a_max (a_max as it is after that edge's write), the unit's V and soft stop
-    // action after that edge
+    // tick, vt and a_max (a_max as it is after that edge's write), the unit's V after that
+    // edge and its soft stop action
     tmc429_accel #(.NMOT(1)) accel (
-        .clk(clk), .rst(vin[113]), .ld({2'b00, vin_nx[111]}),
+        .clk(clk), .rst(vin[114]), .ld({2'b00, vin_nx[111]}),
         .v_hold({40'd0, v_hold}), .vt({24'd0, vin_nx[42:31]}),
-        .stop_soft_nx({2'b00, stop_soft_nx}), .a_max({22'd0, vin_nx[72:62]}),
+        .stop_soft({2'b00, stop_soft}), .a_max({22'd0, vin_nx[72:62]}),
         .a_max_we(3'b000), .a_max_wd(11'd0),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
     tmc429_ramp #(.HAS_USTEP(CHIP != 0)) dut (
-        .clk(clk), .rst(vin[113]),
-        .run(vin[112]), .ramp_tick(vin[111]), .pulse_tick(vin[110]), .rm(vin[109:108]),
+        .clk(clk), .rst(vin[114]),
+        .run(vin[113]), .cond_tick(vin[112]), .ramp_tick(vin[111]), .pulse_tick(vin[110]), .rm(vin[109:108]),
         .x_target(vin[107:84]), .v_min(vin[83:73]), .ref_conf(vin[61:58]),
         .usrs(vin[57:55]), .dx_ref_tolerance(vin[54:43]),
         .tol_k(13'd4096 - {1'b0, vin[54:43]}), .vt(vin[42:31]),
@@ -43,7 +43,7 @@ module tb_ramp;
         .a_actual(vout[72:61]), .ustep(vout[60:53]), .acc(vout[52:42]), .step(vout[41]),
         .dir(vout[40]), .x_latched(vout[39:16]), .lp(vout[15]), .xeqt(vout[14]),
         .stop(vout[13]), .tol_ok(vout[12]), .v_actual(vout[11:0]),
-        .v_hold(v_hold), .stop_soft_nx(stop_soft_nx));
+        .v_hold(v_hold), .stop_soft(stop_soft));
 endmodule
 
 `default_nettype wire
