@@ -45,20 +45,27 @@ pub fn edge(m: &mut Motor, vt: i32, cond_tick: bool, ramp_tick: bool, pulse_tick
     events
 }
 
-/// The conditions of motor `m` in its condition slot, from the old state (C52, C61–C63): the
-/// interrupt conditions and their rising edges against the last slot's (C63, returned), the
-/// latch on a change of the selected switch since the last slot (C62), and the stop actions
-/// registered for the edges up to the next slot (C52, C61). `vt`, `l`, `r` as in [`edge`].
+/// What motor `m`'s condition slot takes from the old state (C52, C61–C63): the interrupt
+/// conditions (C63), the REF_RnL-selected switch (C62) and the stop actions to register (C52,
+/// C61).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Conditions {
+    pub cond: u8,
+    pub sel: bool,
+    pub stop_hard: bool,
+    pub stop_soft: bool,
+}
+
+/// The conditions of motor `m` from its old state, `vt`, `l`, `r` as in [`edge`] (nothing
+/// changes).
 #[inline]
-pub fn conditions(m: &mut Motor, vt: i32, l: bool, r: bool) -> u8 {
+pub fn evaluate(m: &Motor, vt: i32, l: bool, r: bool) -> Conditions {
     let sel = if m.ref_conf & REF_RNL != 0 { r } else { l };
     // The tolerance window masks the stop of both switches (C61).
     let (tol_ok, stop) = switch_stop(m.x_actual, m.v, vt, m.ref_conf, m.dx_ref_tolerance, l, r);
     let soft = m.ref_conf & SOFT_STOP != 0;
     let at_target = m.x_actual == m.x_target;
     let stop_at_target = m.rm <= SOFT_MODE && at_target && (m.v.unsigned_abs() >> 8) <= m.v_min as u32;
-
-    // Interrupt conditions (C63).
     let cond = ((at_target as u8) * INT_POS_END)
         | (((sel && !tol_ok) as u8) * INT_REF_WRONG)
         | (((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS)
@@ -67,18 +74,33 @@ pub fn conditions(m: &mut Motor, vt: i32, l: bool, r: bool) -> u8 {
         | (!r as u8) * INT_STOP_RIGHT_LOW
         | (l as u8) * INT_STOP_LEFT_HIGH
         | (r as u8) * INT_STOP_RIGHT_HIGH;
-    let events = cond & !m.cond_prev;
-    m.cond_prev = cond;
+    Conditions { cond, sel, stop_hard: stop_at_target || (stop && !soft), stop_soft: stop && soft }
+}
 
+/// Whether motor `m`'s condition slot would change nothing: the conditions are those the last
+/// slot registered (no event, no latch, the same stop actions).
+#[inline]
+pub fn settled(m: &Motor, vt: i32, l: bool, r: bool) -> bool {
+    let c = evaluate(m, vt, l, r);
+    c == Conditions { cond: m.cond_prev, sel: m.ref_prev, stop_hard: m.stop_hard, stop_soft: m.stop_soft }
+}
+
+/// Motor `m`'s condition slot (C52, C61–C63): the interrupt conditions' rising edges against the
+/// last slot's (C63, returned), the latch on a change of the selected switch since the last slot
+/// (C62), and the stop actions registered for the edges up to the next slot (C52, C61).
+#[inline]
+pub fn conditions(m: &mut Motor, vt: i32, l: bool, r: bool) -> u8 {
+    let c = evaluate(m, vt, l, r);
+    let events = c.cond & !m.cond_prev;
+    m.cond_prev = c.cond;
     // Latch (C62): "takes effect only during motion (when V_ACTUAL ≠ 0)".
-    if m.lp && m.v_actual() != 0 && sel != m.ref_prev {
+    if m.lp && m.v_actual() != 0 && c.sel != m.ref_prev {
         m.x_latched = m.x_actual;
         m.lp = false;
     }
-    m.ref_prev = sel;
-
-    m.stop_hard = stop_at_target || (stop && !soft);
-    m.stop_soft = stop && soft;
+    m.ref_prev = c.sel;
+    m.stop_hard = c.stop_hard;
+    m.stop_soft = c.stop_soft;
     events
 }
 
