@@ -68,6 +68,7 @@ fn hard_stop_left() {
     h.wait(5000);
     assert_eq!(h.chip().motor(0).v_actual(), -1000);
     wr(&mut h, 0, INTERRUPT, 0xFFFF); // clear what happened so far
+
     // Put the pin up 10 edges before motor 0's condition slot (its snapshot phase 0).
     while h.chip().probes().prescaler & 31 != 32 - 10 {
         h.wait(1);
