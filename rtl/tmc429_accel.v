@@ -5,8 +5,8 @@
 // one motor ramps in a cycle. Its operands are registered in the edge before its ramp tick
 // (`ld`, one-hot: the next cycle is motor m's ramp phase), from the state they have after that
 // edge: V as it holds without a tick (`v_hold` of tmc429_ramp: µC write, stop_hard), the
-// registered soft stop action (set only in the motor's condition slot, phase 7m, never the
-// edge before its ramp tick), a_max with a µC write of that edge, and the committed target
+// registered soft stop action (set only in the motor's condition slot, phase 7m + 14, the
+// edge before that one), a_max with a µC write of that edge, and the committed target
 // vt (committed at phase 7m + 14, stable in that edge); T is registered with the soft stop
 // applied. So the tick's arithmetic starts at flip-flops; the motor's tmc429_ramp loads the
 // results in its ramp tick:

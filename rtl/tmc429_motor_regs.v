@@ -27,7 +27,7 @@ module tmc429_motor_regs #(
     output wire [23:0] rdata,
     input  wire        sw_l,      // mapped left switch (C60)
     input  wire        sw_r,      // mapped right switch
-    input  wire        cond_tick, // the motor's snapshot phase: its condition slot (C41)
+    input  wire        cond_tick, // the motor's commit phase: its condition slot (C41)
     input  wire        ramp_tick, // ramp phase of a ramp frame (C40, C41)
     input  wire        pulse_tick,// pulse phase of a pulse frame
     input  wire [11:0] vt,        // committed target velocity (C41)

@@ -7,7 +7,7 @@
 // functions of its registers and inputs. The port list is the boundary at which test vectors of
 // the unit are taken (rtl/README.md).
 //
-// In the motor's condition slot (cond_tick: its snapshot phase, every frame) with run = 1,
+// In the motor's condition slot (cond_tick: its commit phase, every frame) with run = 1,
 // from the old state:
 //   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol, stop_R
 //                  symmetric; tol = |x_actual| < dx_ref_tolerance masks both switches
@@ -34,7 +34,7 @@ module tmc429_ramp #(
     input  wire        clk,
     input  wire        rst,
     input  wire        run,        // 0 while powered down (C66)
-    input  wire        cond_tick,  // phase 7m, motor m's snapshot: its condition slot (C41)
+    input  wire        cond_tick,  // phase 14 + 7m, motor m's commit: its condition slot (C41)
     input  wire        ramp_tick,  // phase 16 + 7m of a ramp frame of this motor m (C40, C41)
     input  wire        pulse_tick, // phase 17 + 7m of a pulse frame of this motor
     // registers of the motor (old state)

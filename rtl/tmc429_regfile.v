@@ -121,8 +121,8 @@ module tmc429_regfile #(
     // ---- frame schedule (C40, C41) ----------------------------------------------------
     // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. Motor m's
     // ramp tick is at phase TMC429_PH_RAMP(m), its pulse tick at TMC429_PH_PULSE(m), its
-    // condition slot at TMC429_PH_SNAPSHOT(m) of every frame (rtl/tmc429_schedule.vh:
-    // 16 + 7m, 17 + 7m, 7m; C52, C61-C63). The ticks are registers formed
+    // condition slot at TMC429_PH_COMMIT(m) of every frame (rtl/tmc429_schedule.vh:
+    // 16 + 7m, 17 + 7m, 14 + 7m; C52, C61-C63). The ticks are registers formed
     // one edge ahead: the phase after this edge is p + run, the frame changes only from phase
     // 31 to 0 (and not while powered down), and the divider after this edge is the one a µC
     // write of clk_config in this edge stores.
@@ -202,7 +202,7 @@ module tmc429_regfile #(
             wire p_due = w_div ? p_due_w : (ones_d >= m_pulse_div[4*g+3:4*g]);
             localparam [4:0] PH_RAMP = `TMC429_PH_RAMP(g);
             localparam [4:0] PH_PULSE = `TMC429_PH_PULSE(g);
-            localparam [4:0] PH_SNAPSHOT = `TMC429_PH_SNAPSHOT(g);
+            localparam [4:0] PH_COND = `TMC429_PH_COMMIT(g);
             wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
             assign ph_ramp_ld[g] = ph_ramp_nx;
             assign am_we[g] = we_m & (jdx == `TMC429_IDX_A_MAX);
@@ -212,13 +212,13 @@ module tmc429_regfile #(
                 if (rst) begin
                     ramp_tick[g] <= 1'b0;
                     pulse_tick[g] <= 1'b0;
-                    cond_tick[g] <= PH_SNAPSHOT == 5'd0;
+                    cond_tick[g] <= PH_COND == 5'd0;
                 end else begin
                     ramp_tick[g] <= ramp_tick_nx[g];
                     pulse_tick[g] <= ph_pulse_nx & p_due;
-                    // the condition slot: the snapshot phase of every frame, whether the core
+                    // the condition slot: the commit phase of every frame, whether the core
                     // runs in it or not (tmc429_ramp acts on it only with run)
-                    cond_tick[g] <= run ? (ph == PH_SNAPSHOT - 5'd1) : (ph == PH_SNAPSHOT);
+                    cond_tick[g] <= run ? (ph == PH_COND - 5'd1) : (ph == PH_COND);
                 end
             end
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (

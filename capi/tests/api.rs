@@ -126,9 +126,9 @@ fn int_events_from_a_reference_switch() {
         assert_eq!(tmc429_set_pin(h, TMC429_PIN_REF1, 1), TMC429_OK);
         tmc429_advance_cycles(h, 40);
         // Two synchronizer flops, then the switch is in the old state from edge c0 + 3 on; the
-        // motion core takes it in motor 1's condition slot, the edge of phase 0 (C52, C63): with
+        // motion core takes it in motor 1's condition slot, the edge of phase 14 (C52, C63): with
         // no power down the pre-divider before edge k (counted from 1) is k - 1.
-        let slot = (c0 + 3..).find(|k| (k - 1) % 32 == 0).unwrap();
+        let slot = (c0 + 3..).find(|k| (k - 1) % 32 == 14).unwrap();
         assert_eq!(drain(h), vec![format!("int {slot} 1")]);
         let mut st = 0u8;
         assert_eq!(tmc429_get_status(h, &mut st), TMC429_OK);

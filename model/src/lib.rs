@@ -377,7 +377,7 @@ impl Tmc429 {
     /// Fast path, exactly equivalent to the full edge (tests/fast_path.rs): the pins are settled
     /// in the synchronizers (no SPI edge in flight, no switch change), the motion core is quiet,
     /// and this phase of the frame has nothing to do: no condition slot of a motor (C52, C61–C63:
-    /// its snapshot phase) whose conditions differ from those its last slot registered, no
+    /// its commit phase) whose conditions differ from those its last slot registered, no
     /// snapshot that changes a target, no ramp tick, no pulse tick that adds to an accumulator.
     /// Then the edge only advances the counters.
     #[inline]
@@ -399,7 +399,7 @@ impl Tmc429 {
             Some(i) if i < n => self.motors[i].rm == HOLD_MODE || !schedule::due(c, self.motors[i].ramp_div),
             _ => true,
         };
-        if let Some(i) = schedule::lane_of(&PHASE_SNAPSHOT, p).filter(|&i| i < n) {
+        if let Some(i) = schedule::lane_of(&PHASE_COMMIT, p).filter(|&i| i < n) {
             let (left, right) = self.switches();
             let m = &self.motors[i];
             if !ramp::settled(m, m.vt, (left >> i) & 1 != 0, (right >> i) & 1 != 0) {

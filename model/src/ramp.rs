@@ -7,7 +7,7 @@ use crate::accel;
 use crate::motor::*;
 
 /// One edge of motor `m`'s ramp and pulse generator from the old state (C1): in the motor's
-/// condition slot (`cond_tick`, its snapshot phase, C41) the conditions of the switch stop,
+/// condition slot (`cond_tick`, its commit phase, C41) the conditions of the switch stop,
 /// stop at target, latch and interrupts and their registered actions ([`conditions`]; the
 /// interrupt events are returned, 0 outside the slot); the ramp tick (C51, with `ramp_tick` in
 /// any mode; HOLD_MODE makes none) and the pulse tick (C53) under the stop actions of the old
@@ -126,7 +126,7 @@ pub fn switch_stop(x_actual: u32, v: i32, vt: i32, ref_conf: u8, dx_ref_toleranc
 pub struct RampInputs {
     /// The motion core runs (not powered down, C66).
     pub run: bool,
-    /// The motor's condition slot, its snapshot phase 7·m of every frame (C41, C52, C61–C63).
+    /// The motor's condition slot, its commit phase 7·m + 14 of every frame (C41, C52, C61–C63).
     pub cond_tick: bool,
     /// The motor's ramp phase 7·m + 16 of a frame F with F mod 2^ramp_div = 2^ramp_div − 1 (C40,
     /// C41); any ramp mode.

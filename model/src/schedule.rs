@@ -10,9 +10,9 @@ use crate::motor::Motor;
 pub const PRESCALER_BITS: u32 = 20;
 pub(crate) const PRESCALER_MASK: u32 = (1 << PRESCALER_BITS) - 1;
 
-/// Phases of the 32-cycle frame (C41), motor m's lane 7·m after motor 0's: target snapshot
-/// (also the condition slot of the switch stop, stop at target, latch and interrupts, C52,
-/// C61–C63), commit of that target, ramp tick, pulse tick.
+/// Phases of the 32-cycle frame (C41), motor m's lane 7·m after motor 0's: target snapshot,
+/// commit of that target (also the condition slot of the switch stop, stop at target, latch and
+/// interrupts, C52, C61–C63), ramp tick, pulse tick.
 pub const PHASE_SNAPSHOT: [u32; 3] = [0, 7, 14];
 pub const PHASE_COMMIT: [u32; 3] = [14, 21, 28];
 pub const PHASE_RAMP: [u32; 3] = [16, 23, 30];
@@ -39,11 +39,11 @@ pub fn due(c: u32, div: u8) -> bool {
     (c >> 5) & mask == mask
 }
 
-/// The edge of `c` is motor `m`'s condition slot: its snapshot phase, in every frame (C41,
-/// C52, C61–C63).
+/// The edge of `c` is motor `m`'s condition slot: its commit phase, in every frame (C41, C52,
+/// C61–C63).
 #[inline]
 pub fn cond_tick(c: u32, m: usize) -> bool {
-    phase(c) == PHASE_SNAPSHOT[m]
+    phase(c) == PHASE_COMMIT[m]
 }
 
 /// The edge of `c` is a ramp tick of motor `m` with `ramp_div` (its ramp phase of a due frame).

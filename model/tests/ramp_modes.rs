@@ -84,9 +84,9 @@ fn soft_mode_ends_on_target() {
     assert_eq!(h.chip().motor(0).v, 0);
 }
 
-/// C52: the stop at target is evaluated in motor 0's condition slot (its snapshot phase 0) and
-/// registered. The step onto x_target (motor 0's pulse phase 17) leaves V as it is through the
-/// rest of the frame; the slot's edge sees the condition and sets stop_hard, V := 0 one edge
+/// C52: the stop at target is evaluated in motor 0's condition slot (its commit phase 14) and
+/// registered. The step onto x_target (motor 0's pulse phase 17) leaves V as it is up to the
+/// next frame's slot; the slot's edge sees the condition and sets stop_hard, V := 0 one edge
 /// later, and no further step follows (the next ramp and pulse ticks come after the slot).
 #[test]
 fn stop_at_target_acts_from_the_condition_slot() {
@@ -108,15 +108,15 @@ fn stop_at_target_acts_from_the_condition_slot() {
         "the step onto the target is made at motor 0's pulse phase"
     );
     assert!(m.v != 0 && m.v.unsigned_abs() >> 8 <= 2, "arrives at |v| <= v_min = 2, V moving: {}", m.v);
-    // phases 18..31: no slot of motor 0, nothing changes
-    for _ in (tmc429_model::PHASE_PULSE[0] + 1)..32 {
+    // phases 18..31 and 0..13 of the next frame: no slot of motor 0, nothing changes
+    for _ in (tmc429_model::PHASE_PULSE[0] + 1)..(32 + tmc429_model::PHASE_COMMIT[0]) {
         c.tick(&idle);
         assert!(!c.motor(0).stop_hard);
         assert_eq!(c.motor(0).v, m.v, "V untouched before the slot");
     }
-    assert_eq!(c.probes().prescaler & 31, tmc429_model::PHASE_SNAPSHOT[0]);
+    assert_eq!(c.probes().prescaler & 31, tmc429_model::PHASE_COMMIT[0]);
     c.tick(&idle);
-    assert!(c.motor(0).stop_hard, "the condition of the slot (phase 0) is registered");
+    assert!(c.motor(0).stop_hard, "the condition of the slot (phase 14) is registered");
     assert_eq!(c.motor(0).v, m.v, "V is untouched in the edge that sees the condition");
     c.tick(&idle);
     assert_eq!(c.motor(0).v, 0, "V := 0 one edge later");

@@ -69,8 +69,8 @@ fn hard_stop_left() {
     assert_eq!(h.chip().motor(0).v_actual(), -1000);
     wr(&mut h, 0, INTERRUPT, 0xFFFF); // clear what happened so far
 
-    // Put the pin up 10 edges before motor 0's condition slot (its snapshot phase 0).
-    while h.chip().probes().prescaler & 31 != 32 - 10 {
+    // Put the pin up 10 edges before motor 0's condition slot (its commit phase 14).
+    while h.chip().probes().prescaler & 31 != tmc429_model::PHASE_COMMIT[0] - 10 {
         h.wait(1);
     }
     set_refs(&mut h, true, false, false);
@@ -81,7 +81,7 @@ fn hard_stop_left() {
         assert!(!h.chip().motor(0).stop_hard, "no stop before the slot");
         assert_eq!(h.chip().motor(0).v, -1000 * 256);
     }
-    assert_eq!(h.chip().probes().prescaler & 31, tmc429_model::PHASE_SNAPSHOT[0]);
+    assert_eq!(h.chip().probes().prescaler & 31, tmc429_model::PHASE_COMMIT[0]);
     h.wait(1);
     assert!(h.chip().motor(0).stop_hard, "the condition of the slot is registered");
     assert_eq!(h.chip().motor(0).v, -1000 * 256, "the action comes one edge later (C52)");
@@ -287,8 +287,8 @@ fn right_switch_interrupts() {
 
 /// C41 with C61: a snapshot acts only from its commit (motor 0: phase 14) on. Motor at V = 0 (a_max 0)
 /// on an active left switch in VELOCITY_MODE: a negative v_target makes vt < 0, which starts a
-/// stop condition — in motor 1's first condition slot (C61: its snapshot phase) after the commit,
-/// not the one of the snapshot that computes it.
+/// stop condition — in motor 1's first condition slot (C61: its commit phase) after the commit,
+/// not in the commit's own edge, whose slot reads the old target.
 #[test]
 fn target_snapshot_acts_from_the_commit() {
     use tmc429_model::{Inputs, Tmc429, PHASE_COMMIT, PHASE_SNAPSHOT};
@@ -315,10 +315,12 @@ fn target_snapshot_acts_from_the_commit() {
         c.tick(&inp);
         assert_eq!(c.motor(0).int_flags & INT_STOP, 0, "no stop before the commit");
     }
-    c.tick(&inp); // commit edge: vt changes in its new state
+    c.tick(&inp); // commit edge: vt changes in its new state; the slot read the old vt
     assert_eq!(c.motor(0).vt, -50);
-    // the condition is evaluated in motor 1's next condition slot, its snapshot phase (C61)
-    while c.probes().prescaler & 31 != PHASE_SNAPSHOT[0] {
+    assert_eq!(c.motor(0).int_flags & INT_STOP, 0);
+    c.tick(&inp);
+    // the condition is evaluated in motor 1's next condition slot, its commit phase (C61)
+    while c.probes().prescaler & 31 != PHASE_COMMIT[0] {
         c.tick(&inp);
         assert_eq!(c.motor(0).int_flags & INT_STOP, 0, "no stop before the slot");
     }
@@ -332,7 +334,7 @@ fn target_snapshot_acts_from_the_commit() {
 /// a slot stops the motor in that slot's edge.
 #[test]
 fn a_switch_level_between_two_slots_is_not_seen() {
-    use tmc429_model::{Inputs, Tmc429, PHASE_SNAPSHOT};
+    use tmc429_model::{Inputs, Tmc429, PHASE_COMMIT};
     let mut c = Tmc429::new(Chip::Tmc429);
     let idle = Inputs::default();
     let on = Inputs { ref1: true, ..Inputs::default() };
@@ -340,11 +342,11 @@ fn a_switch_level_between_two_slots_is_not_seen() {
     c.write_register(0x03, 2047); // v_max
     c.write_register(0x05, (-100i32) as u32 & 0xFFF); // v_actual: moving left
     c.write_register(0x0A, 3); // HOLD_MODE: V stays as written
-    while c.probes().prescaler & 31 != PHASE_SNAPSHOT[0] + 1 {
+    while c.probes().prescaler & 31 != PHASE_COMMIT[0] + 1 {
         c.tick(&idle);
     }
     // REF1 high for 20 edges right after the slot: in the old state (two synchronizer flops, C4)
-    // from phase 3 to phase 22, back low before the next slot
+    // from the slot's third edge on for 20 edges, back low before the next slot
     for _ in 0..20 {
         c.tick(&on);
     }
@@ -354,7 +356,7 @@ fn a_switch_level_between_two_slots_is_not_seen() {
     let m = c.motor(0);
     assert_eq!((m.stop_hard, m.int_flags, m.v), (false, 0, -100 * 256), "not seen");
     // held over the slot: stopped, STOP and STOP_LEFT_HIGH (REF_WRONG: outside a window of 0)
-    while c.probes().prescaler & 31 != (PHASE_SNAPSHOT[0] + 32 - 3) % 32 {
+    while c.probes().prescaler & 31 != (PHASE_COMMIT[0] + 32 - 3) % 32 {
         c.tick(&idle);
     }
     for _ in 0..3 {

@@ -191,8 +191,8 @@ fn velocity_mode_reaches_v_target() {
 }
 
 /// C61, C62: a hard stop on the left switch while moving left, the latch armed by a write to
-/// x_latched takes x_actual at the switch edge; both in motor 1's condition slot (its snapshot
-/// phase 0).
+/// x_latched takes x_actual at the switch edge; both in motor 1's condition slot (its commit
+/// phase 14).
 #[test]
 fn hard_switch_stop_and_latch() {
     let mut c = Chip1::new(Chip::Tmc428);
@@ -205,7 +205,7 @@ fn hard_switch_stop_and_latch() {
     assert_eq!(c.rd(0, REF_CONF_RM) >> 16 & 1, 1, "lp armed");
     // the pin goes up 10 edges before the slot; the switch is in the old state from the 3rd
     // edge on (C4), but nothing acts on it before the slot
-    while c.rtl.probes().prescaler & 31 != 32 - 10 {
+    while c.rtl.probes().prescaler & 31 != tmc429_model::PHASE_COMMIT[0] - 10 {
         c.wait(1);
     }
     c.ref1 = true;
