@@ -9,7 +9,7 @@
 //   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE)
 //   p = 7m+2..+6  acc = c * W, W = p_mul << u (10-bit multiplier word, Horner, 2 bits per cycle)
 //   p = 7m+7..+13 B: RAMP_MODE: square root of Y = (acc << 11) >> pdiv (the radicand of C50),
-//                 two result bits per cycle (restoring, 14 bits); SOFT_MODE: (c * p_mul) >> (3+pdiv), four bits per cycle shifted
+//                 two result bits per cycle (14 bits); SOFT_MODE: (c * p_mul) >> (3+pdiv), four bits per cycle shifted
 //                 out of acc
 //   p = 7m+14     C: RAMP_MODE: v = (q - h) >> 2 with q the root and h = ⌈a_max/128⌉ when
 //                 ramp_div >= pulse_div (the velocity held between ramp ticks, C50), clamp to
@@ -246,7 +246,9 @@ module tmc429_vtarget #(
     reg        b_odd;
     reg [2:0]  b_ne;
     reg [27:0] sr;
-    reg [14:0] rem;
+    /* verilator lint_off UNUSEDSIGNAL */   // form 0 reads bits 13:0 and the sign, 15
+    reg [15:0] rem;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [13:0] y;
     reg        sticky;
 
@@ -273,26 +275,43 @@ module tmc429_vtarget #(
     wire        st_l   = ~a_soft & (z_sh[39:28] != 12'd0);
     wire        step   = b_load | (b_k < b_ne);
 
-    // two restoring square-root steps per cycle; below saturation the root has at most 14 bits
-    // and the remainder at most 15. R = 16·rem + s4 (the remainder with the next four radicand
-    // bits); the first bit b1 is 1 when R - (16y + 4) >= 0, the second bit b0 when the
-    // remainder after the first step minus (8y + 4·b1 + 1) is >= 0. ROOT_SPEC selects how:
+    // two square-root steps per cycle; below saturation the root has at most 14 bits. ROOT_SPEC
+    // selects how (the root is the same):
     wire [4:0]  q_ld;             // the load's two steps (sqrt_ld below)
     wire        b1, b0;
-    wire [14:0] r_rn;             // the remainder after both steps
+    wire [15:0] r_rn;             // the remainder after both steps
+    wire        y0_nr;            // the root's last bit is the remainder's sign (form 0), below
+    wire [13:0] yv;               // the root so far
     generate
-        if (ROOT_SPEC == 0) begin : chained
-            // the second subtraction takes the first one's kept remainder: two carry chains with
-            // the restoring multiplexer between them
-            /* verilator lint_off UNUSEDSIGNAL */   // bits 16:15 of a kept difference are 0
-            wire [17:0] t1 = {1'b0, rem, sr[27:26]} - {2'b00, y, 2'b01};
-            wire [14:0] r1 = b1 ? t1[14:0] : {rem[12:0], sr[27:26]};
-            wire [17:0] t2 = {1'b0, r1, sr[25:24]} - {2'b00, y[12:0], b1, 2'b01};
+        if (ROOT_SPEC == 0) begin : nonrestoring
+            // non-restoring steps: the remainder R (16 bits, two's complement) is kept whatever
+            // its sign, and the next step subtracts 4y + 1 from 4R + s (R >= 0) or adds 4y + 3
+            // (R < 0); the new root bit is 1 when the new R >= 0. The load's restoring remainder
+            // (>= 0) is a state of the same steps. |R| <= 2y + 1 < 2^15, so every sum is taken
+            // modulo 2^16 (exhaustively the same root as isqrt for every 28-bit radicand). The
+            // step subtracting is an addition of ~(4y + 1) + 1 = {~y, 11}, so each step is one
+            // sum {R, s} + {y XOR ~sign, 11}: no multiplexer after either carry chain.
+            wire        neg0 = rem[15];
+            /* verilator lint_off UNUSEDSIGNAL */   // bit 14 of the first sum is not needed
+            wire [15:0] n1 = {rem[13:0], sr[27:26]} + {yv ^ {14{~neg0}}, 2'b11};
             /* verilator lint_on UNUSEDSIGNAL */
-            assign b1 = ~t1[17];
-            assign b0 = ~t2[17];
-            assign r_rn = b0 ? t2[14:0] : {r1[12:0], sr[25:24]};
+            assign b1 = ~n1[15];
+            // the second step's root is {y, b1} and its sign R1 < 0 is ~b1
+            wire [15:0] n2 = {n1[13:0], sr[25:24]} + {{yv[12:0], b1} ^ {14{b1}}, 2'b11};
+            assign b0 = ~n2[15];
+            assign r_rn = n2;
+            // the new root bit b0 is not written into y (a multiplexer after the carry chain):
+            // after a running step y[0] is read as ~rem[15]
+            reg y0_r;
+            always @(posedge clk) begin
+                if (rst)
+                    y0_r <= 1'b0;
+                else if (run & b_run & step)
+                    y0_r <= ~m_soft & ~b_load;
+            end
+            assign y0_nr = y0_r;
         end else begin : side_by_side
+            // restoring steps, R = 16·rem + s4 (the remainder with the next four radicand bits);
             // the three differences either pair of steps can keep, side by side from flip-flops,
             // each one subtraction:
             //   D1 = R - (16y + 4)    b1 = 1 when D1 >= 0
@@ -302,7 +321,7 @@ module tmc429_vtarget #(
             // y3p' = 4·(y3p + c) + l with (c, l) = (-1, 1), (0, 0), (0, 3), (1, 2) for b = 0..3,
             // so y3p - 1 and y3p + 1 are formed beside the differences and the new bits select.
             reg  [15:0] y3p;
-            wire [19:0] r_w = {1'b0, rem, sr[27:24]};
+            wire [19:0] r_w = {1'b0, rem[14:0], sr[27:24]};
             /* verilator lint_off UNUSEDSIGNAL */   // bits 19:15 of a kept difference are 0
             wire [19:0] d1  = r_w - {2'b00, y, 4'b0100};
             wire [19:0] d2  = r_w - {3'b000, y, 3'b001};
@@ -312,7 +331,7 @@ module tmc429_vtarget #(
             /* verilator lint_on UNUSEDSIGNAL */
             assign b1 = ~d1[19];
             assign b0 = b1 ? ~d3[19] : ~d2[19];
-            assign r_rn = b1 ? (b0 ? d3[14:0] : d1[14:0]) : (b0 ? d2[14:0] : r_w[14:0]);
+            assign r_rn = {1'b0, b1 ? (b0 ? d3[14:0] : d1[14:0]) : (b0 ? d2[14:0] : r_w[14:0])};
             wire [15:0] y3_rn = b1 ? (b0 ? {y3i[13:0], 2'd2} : {y3p[13:0], 2'd3})
                                    : (b0 ? {y3p[13:0], 2'd0} : {y3m[13:0], 2'd1});
             // 3y + 1 of the loaded root 0..3: 1, 4, 7, 10
@@ -323,8 +342,10 @@ module tmc429_vtarget #(
                 else if (run & b_run & step & ~m_soft)
                     y3p <= b_load ? {12'd0, y3_ld} : y3_rn;
             end
+            assign y0_nr = 1'b0;
         end
     endgenerate
+    assign yv = {y[13:1], y0_nr ? ~rem[15] : y[0]};
     // the two steps from remainder and result 0: root and remainder of the four bits, a table
     // (written out, so that synthesis does not share the running steps' subtractors with it)
     function [4:0] sqrt_ld;         // {r[2:0], y[1:0]}
@@ -341,8 +362,9 @@ module tmc429_vtarget #(
         endcase
     endfunction
     assign q_ld = sqrt_ld(src_l[27:24]);
-    wire [14:0] r2    = b_load ? {12'd0, q_ld[4:2]} : r_rn;
-    wire [13:0] y2    = b_load ? {12'd0, q_ld[1:0]} : {y[11:0], b1, b0};
+    wire [2:0]  r2    = b_load ? q_ld[4:2] : r_rn[2:0];
+    wire [13:0] y2    = b_load ? {12'd0, q_ld[1:0]} : {yv[11:0], b1, b0};
+    wire        y0_keep = ~b_load & (ROOT_SPEC == 0);   // a running step's b0 is ~rem[15]
     wire        st_q  = b_load ? st_l : sticky;
     // SOFT_MODE: four bits shifted into y[11:0]
     wire [11:0] y_p   = b_load ? {8'd0, src_l[27:24]} : {y[7:0], sr[27:24]};
@@ -359,7 +381,7 @@ module tmc429_vtarget #(
             b_rm <= 2'd0; b_soft <= 1'b0; b_vmin <= 12'd0; b_vmax <= 12'd0; b_vabs <= 12'd0;
             b_lo4 <= 14'd0; b_hi4 <= 14'd4; b_hk <= 15'd0; b_lo_gt <= 1'b0;
             b_neg <= 1'b0; b_none <= 1'b1; b_odd <= 1'b0; b_ne <= 3'd0;
-            sr <= 28'd0; rem <= 15'd0; y <= 14'd0; sticky <= 1'b0;
+            sr <= 28'd0; rem[2:0] <= 3'd0; y <= 14'd0; sticky <= 1'b0;
         end else if (run) begin
             if (b_load) begin
                 b_rm <= a_rm; b_soft <= a_soft;
@@ -380,12 +402,24 @@ module tmc429_vtarget #(
                     y <= {2'b00, y_p};
                     sticky <= st_p;
                 end else begin
-                    rem <= r2;
-                    y <= y2;
+                    rem[2:0] <= r2;
+                    y[13:1] <= y2[13:1];
+                    if (~y0_keep)
+                        y[0] <= y2[0];
                     sticky <= st_q;
                 end
             end
         end
+    end
+
+    // the remainder's upper bits: 0 at the load (the table's remainder is below 8), so that the
+    // load is the flip-flops' synchronous reset and the sum enters them without a multiplexer
+    wire rem_clr = rst | (run & b_run & b_load);
+    always @(posedge clk) begin
+        if (rem_clr)
+            rem[15:3] <= 13'd0;
+        else if (run & b_run & step & ~m_soft)
+            rem[15:3] <= r_rn[15:3];
     end
 
     // ---- C: clamp, sign -------------------------------------------------------------------
@@ -396,10 +430,10 @@ module tmc429_vtarget #(
     // -((q - h) >> 2) = (h + 3 - q) >> 2 = (~q + h + 4) >> 2, so that no negation follows
     wire        c_vel  = b_rm == 2'd2;
     wire        c_ramp = b_rm == 2'd0;
-    wire        y_sat  = sticky | (~b_odd & y[11]);
-    wire [10:0] y_mag  = b_odd ? y[11:1] : y[10:0];
+    wire        y_sat  = sticky | (~b_odd & yv[11]);
+    wire [10:0] y_mag  = b_odd ? yv[11:1] : yv[10:0];
     wire [11:0] mag    = c_vel ? b_vabs : {y_sat, y_mag};
-    wire [13:0] q      = c_ramp ? y : {mag, 2'b00};
+    wire [13:0] q      = c_ramp ? yv : {mag, 2'b00};
     wire        q_sat  = c_ramp & sticky;
     wire        below  = ~q_sat & (q < b_lo4);
     wire        above  = q_sat | (q >= b_hi4);
