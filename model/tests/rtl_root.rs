@@ -33,7 +33,8 @@ fn root(radicand: u32) -> u32 {
 #[test]
 fn the_load_table_is_the_rtl_table() {
     // {r[2:0], y[1:0]} of sqrt_ld for s4 = 0..15
-    let table = [(0, 0), (0, 1), (1, 1), (2, 1), (0, 2), (1, 2), (2, 2), (3, 2), (4, 2), (0, 3), (1, 3), (2, 3), (3, 3), (4, 3), (5, 3), (6, 3)];
+    let table =
+        [(0, 0), (0, 1), (1, 1), (2, 1), (0, 2), (1, 2), (2, 2), (3, 2), (4, 2), (0, 3), (1, 3), (2, 3), (3, 3), (4, 3), (5, 3), (6, 3)];
     for (s4, want) in table.iter().enumerate() {
         assert_eq!(load(s4 as u32), *want, "s4 = {s4}");
     }
