@@ -37,9 +37,9 @@
 
 module tmc429_vtarget #(
     parameter NMOT = 3,           // motors present (TMC4210: 1)
-    // square root steps: 0 two chained subtractions per cycle; 1 three subtractions side by
-    // side and a register 3y + 1 (about 110 logic cells more on an iCE40, one carry chain
-    // instead of two in the cycle); the result is the same
+    // square root steps: 0 two non-restoring steps per cycle (two carry chains, one XOR
+    // between them); 1 three restoring differences side by side and a register 3y + 1 (one
+    // carry chain in the cycle, about 150 logic cells more); the root is the same
     parameter ROOT_SPEC = 0
 ) (
     input  wire        clk,
