@@ -52,9 +52,12 @@ module tmc429_stepdir (
     reg         hold;
     wire        pend   = (state == PULSE) && !step_half;
     wire        take   = ~hold & ~pend & bl_nz & (neg == dir);
+    // dlt = s + t: take needs neg == dir, so t = dir ? +1 : -1, and both sums are formed
+    // from flip-flops without an adder; take selects between them
     wire [2:0]  s_d    = s_pos ? 3'd1 : (s_neg ? 3'd7 : 3'd0);
-    wire [2:0]  t_d    = take ? (neg ? 3'd1 : 3'd7) : 3'd0;
-    wire [2:0]  dlt    = s_d + t_d;                                                 // -2..2
+    wire [2:0]  d_tk   = dir ? (s_pos ? 3'd2 : (s_neg ? 3'd0 : 3'd1))
+                             : (s_pos ? 3'd0 : (s_neg ? 3'd6 : 3'd7));
+    wire [2:0]  dlt    = take ? d_tk : s_d;                                         // -2..2
     wire [23:0] bl     = backlog + {{21{dlt[2]}}, dlt};
     wire        e_hi0  = backlog[23:3] == 21'd0;
     wire        e_hi1  = backlog[23:3] == 21'h1FFFFF;
