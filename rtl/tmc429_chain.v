@@ -128,7 +128,7 @@ module tmc429_chain (
     reg        cov_sel, cov_bit;
     reg        nxm, nxm_n;
     reg [5:0]  cov_pos;
-    reg [4:0]  cov_len;
+    reg [6:0]  cov_end;                 // cover_pos + cover_len (length at most 24)
     reg [23:0] cov_data;
     reg [9:0]  cupd0, cupd1, cupd2;
     reg        cover_busy_n, dgw_busy_n, start, shift;
@@ -164,10 +164,11 @@ module tmc429_chain (
     assign ram_addr = rd_cfg ? (CELL_CFG | {1'b0, cfg_cell}) : (CELL_LUT | {1'b0, lut_idx});
 
     // ---- cover (C85): positions cover_pos <= k < cover_pos + len carry data[len-1-(k-pos)];
-    // decided at cnt = 2 (bits does not change before the LOW entry)
-    wire [6:0] cov_d   = bits - {1'b0, cov_pos};
-    wire       cov_in  = cover_busy & (bits >= {1'b0, cov_pos}) & (cov_d < {2'b0, cov_len});
-    wire [4:0] cov_i   = cov_len - 5'd1 - cov_d[4:0];
+    // decided at cnt = 2 (bits does not change before the LOW entry). With the end
+    // e = pos + len latched, the two bounds are compared side by side and the index
+    // len - 1 - (k - pos) = e - 1 - k is one sum, e + ~k (mod 32)
+    wire       cov_in  = cover_busy & (bits >= {1'b0, cov_pos}) & (bits < cov_end);
+    wire [4:0] cov_i   = cov_end[4:0] + ~bits[4:0];
     wire       bit_now = cov_sel ? cov_bit : sig_bit;
 
     // ---- requests (C83) ---------------------------------------------------------------------
@@ -313,7 +314,7 @@ module tmc429_chain (
             snap_step <= stepped | step;
             snap_pol  <= {pol_dac_ab, pol_fd_ab, pol_ph_ab};
             cov_pos   <= cover_pos;
-            cov_len   <= (cover_len > 5'd24) ? 5'd24 : cover_len;
+            cov_end   <= {1'b0, cover_pos} + ((cover_len > 5'd24) ? 7'd24 : {2'd0, cover_len});
             cov_data  <= cover_datagram;
         end else if (shift) begin
             // the NxM gap: the next motor's snapshot moves to slot 0

@@ -137,9 +137,10 @@ pub struct Chain {
     pub cover_busy: bool,
     /// A datagram_low/high_word write was pending at the start of the datagram in progress.
     pub dgw_busy: bool,
-    /// Cover position, length (≤ 24) and data latched at the start (C85).
+    /// Cover position, end (position + length, the length at most 24) and data latched at the
+    /// start (C85).
     pub cov_pos: u8,
-    pub cov_len: u8,
+    pub cov_end: u8,
     pub cov_data: u32,
     /// Ramp ticks per motor for continuous update (mod 1024, C83).
     pub cupd: [u16; 3],
@@ -193,7 +194,7 @@ impl Chain {
             cover_busy: false,
             dgw_busy: false,
             cov_pos: 0,
-            cov_len: 0,
+            cov_end: 0,
             cov_data: 0,
             cupd: CUPD_RESET,
             cs: false,
@@ -374,7 +375,7 @@ impl Chain {
         self.stepped = 0;
         self.cover_busy = g.cw;
         self.cov_pos = g.cover_pos & 63;
-        self.cov_len = g.cover_len.min(24);
+        self.cov_end = self.cov_pos + g.cover_len.min(24);
         self.cov_data = g.cover_datagram & 0xFF_FFFF;
         self.dgw_busy = g.dgw;
         self.req = false;
@@ -404,8 +405,9 @@ impl Chain {
             (self.snap_step >> m) & 1 != 0,
             self.snap_pol,
         );
-        if self.cover_busy && self.bits >= self.cov_pos && self.bits < self.cov_pos + self.cov_len {
-            let i = self.cov_len - 1 - (self.bits - self.cov_pos);
+        // positions pos ≤ k < end carry data bit len - 1 - (k - pos) = end - 1 - k
+        if self.cover_busy && self.bits >= self.cov_pos && self.bits < self.cov_end {
+            let i = self.cov_end - 1 - self.bits;
             b = (self.cov_data >> i) & 1 != 0;
         }
         self.sdo = b;
