@@ -6,19 +6,21 @@
 //                 v_max, v_target and h are taken from the old state into the A registers
 //                 (v_min, v_max, pmul and pdiv: the synchronous read of the parameter RAMs, whose
 //                 output register is their snapshot)
-//   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE)
-//   p = 7m+2..+6  acc = c * W, W = p_mul << u (10-bit multiplier word, Horner, 2 bits per cycle)
-//   p = 7m+7..+13 B: RAMP_MODE: square root of Y = (acc << 11) >> pdiv (the radicand of C50),
-//                 two result bits per cycle (14 bits); SOFT_MODE: (c * p_mul) >> (3+pdiv), four bits per cycle shifted
-//                 out of acc
-//   p = 7m+14     C: RAMP_MODE: v = (q - h) >> 2 with q the root and h = ⌈a_max/128⌉ when
-//                 ramp_div >= pulse_div (the velocity held between ramp ticks, C50), clamp to
-//                 [v_min, v_max] (VELOCITY_MODE: |v_target| to v_max), sign; commit in
-//                 the same edge: vt[m] := the result (used from phase 7m+15 on)
+//   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE),
+//                 registered shifted by u
+//   p = 7m+2..+5  acc = (c << u) * p_mul (8-bit multiplier word, Horner, 2 bits per cycle)
+//   p = 7m+6..+12 B: RAMP_MODE: square root of Y = (acc << 11) >> pdiv (the radicand of C50),
+//                 two result bits per cycle (14 bits); SOFT_MODE: (c * p_mul) >> (3+pdiv),
+//                 four bits per cycle shifted out of acc
+//   p = 7m+13     C: RAMP_MODE: v = (q - h) >> 2 with q the root and h = ⌈a_max/128⌉ when
+//                 ramp_div >= pulse_div (the velocity held between ramp ticks, C50), the
+//                 comparisons for the clamp to [v_min, v_max] (VELOCITY_MODE: |v_target| to
+//                 v_max), sign: registered
+//   p = 7m+14     commit: vt[m] := the result (used from phase 7m+15 on)
 // Stages A, B and C work on three motors at once (A on m+1 while B runs m): each stage reads
 // the other's registers from the old state.
 //
-// Square root: with t = pdiv >> 1, e = pdiv & 1, u = 1 - e and acc = c * (p_mul << u),
+// Square root: with t = pdiv >> 1, e = pdiv & 1, u = 1 - e and acc = (c << u) * p_mul,
 // Y = floor(acc * 2^11 / 4^t) (acc * 2^11 = p_mul * (|dx|-1) * 2^(12-e)). A root of 2^14
 // or more is beyond any v_max (q - h >= 2^14 - 16 gives v >= 4092), so the load takes the 28
 // bits [27:0] of that quotient (a shift of acc by 11 - 2t) and a nonzero bit above them
@@ -65,45 +67,46 @@ module tmc429_vtarget #(
     // ---- schedule ----------------------------------------------------------------------
     // decoded from the phase after each edge (p + run) into registers, so that every stage
     // starts at a flip-flop
-    reg        a_snap, a_c, a_mul, b_load, b_run;
+    reg        a_snap, a_c, a_mul, b_load, b_run, c_pre;
     reg [1:0]  a_m;
     reg [2:0]  c_out;             // commit of motor m's result (one-hot)
     reg [2:0]  b_k;               // B cycle index 0..6
-    reg        n_a_snap, n_a_c, n_a_mul, n_b_load, n_b_run;
+    reg        n_a_snap, n_a_c, n_a_mul, n_b_load, n_b_run, n_c_pre;
     reg [2:0]  n_c_out;
     reg [1:0]  n_a_m;
     reg [2:0]  n_b_k;
     wire [4:0] phase_nx = phase + {4'd0, run};
     // motor m's stages from its snapshot phase Sm = TMC429_PH_SNAPSHOT(m): A at Sm (snapshot),
-    // Sm + 1 (c), Sm + 2 .. Sm + 6 (multiply); B at Sm + 7 .. Sm + 13 (k = 0 .. 6, the load at
-    // k = 0); C in the commit edge Sm + 14 = TMC429_PH_COMMIT(m) (rtl/tmc429_schedule.vh; the
-    // model's lanes are tested to have this shape)
+    // Sm + 1 (c), Sm + 2 .. Sm + 5 (multiply); B at Sm + 6 .. Sm + 12 (k = 0 .. 6, the load at
+    // k = 0); C at Sm + 13 (c_pre) and the commit edge Sm + 14 = TMC429_PH_COMMIT(m)
+    // (rtl/tmc429_schedule.vh; the model's lanes are tested to have this shape)
     localparam [4:0] S0 = `TMC429_PH_SNAPSHOT(0);
     localparam [4:0] S1 = `TMC429_PH_SNAPSHOT(1);
     localparam [4:0] S2 = `TMC429_PH_SNAPSHOT(2);
     always @(*) begin
         n_a_snap = 1'b0; n_a_c = 1'b0; n_a_mul = 1'b0; n_b_load = 1'b0; n_b_run = 1'b0;
-        n_c_out = 3'd0; n_a_m = 2'd0; n_b_k = 3'd0;
+        n_c_pre = 1'b0; n_c_out = 3'd0; n_a_m = 2'd0; n_b_k = 3'd0;
         case (phase_nx)
         S0: begin n_a_snap = 1'b1; n_a_m = 2'd0; end
         S1: begin n_a_snap = 1'b1; n_a_m = 2'd1; end
         S2: begin n_a_snap = 1'b1; n_a_m = 2'd2; end
         S0 + 5'd1, S1 + 5'd1, S2 + 5'd1: n_a_c = 1'b1;
-        S0 + 5'd2, S0 + 5'd3, S0 + 5'd4, S0 + 5'd5, S0 + 5'd6, S1 + 5'd2, S1 + 5'd3, S1 + 5'd4,
-        S1 + 5'd5, S1 + 5'd6, S2 + 5'd2, S2 + 5'd3, S2 + 5'd4, S2 + 5'd5, S2 + 5'd6: n_a_mul = 1'b1;
+        S0 + 5'd2, S0 + 5'd3, S0 + 5'd4, S0 + 5'd5, S1 + 5'd2, S1 + 5'd3, S1 + 5'd4, S1 + 5'd5,
+        S2 + 5'd2, S2 + 5'd3, S2 + 5'd4, S2 + 5'd5: n_a_mul = 1'b1;
         default: ;
         endcase
         case (phase_nx)
-        S0 + 5'd7, S1 + 5'd7, S2 + 5'd7:    begin n_b_load = 1'b1; n_b_run = 1'b1; n_b_k = 3'd0; end
-        S0 + 5'd8, S1 + 5'd8, S2 + 5'd8:    begin n_b_run = 1'b1; n_b_k = 3'd1; end
-        S0 + 5'd9, S1 + 5'd9, S2 + 5'd9:    begin n_b_run = 1'b1; n_b_k = 3'd2; end
-        S0 + 5'd10, S1 + 5'd10, S2 + 5'd10: begin n_b_run = 1'b1; n_b_k = 3'd3; end
-        S0 + 5'd11, S1 + 5'd11, S2 + 5'd11: begin n_b_run = 1'b1; n_b_k = 3'd4; end
-        S0 + 5'd12, S1 + 5'd12, S2 + 5'd12: begin n_b_run = 1'b1; n_b_k = 3'd5; end
-        S0 + 5'd13, S1 + 5'd13, S2 + 5'd13: begin n_b_run = 1'b1; n_b_k = 3'd6; end
+        S0 + 5'd6, S1 + 5'd6, S2 + 5'd6:    begin n_b_load = 1'b1; n_b_run = 1'b1; n_b_k = 3'd0; end
+        S0 + 5'd7, S1 + 5'd7, S2 + 5'd7:    begin n_b_run = 1'b1; n_b_k = 3'd1; end
+        S0 + 5'd8, S1 + 5'd8, S2 + 5'd8:    begin n_b_run = 1'b1; n_b_k = 3'd2; end
+        S0 + 5'd9, S1 + 5'd9, S2 + 5'd9:    begin n_b_run = 1'b1; n_b_k = 3'd3; end
+        S0 + 5'd10, S1 + 5'd10, S2 + 5'd10: begin n_b_run = 1'b1; n_b_k = 3'd4; end
+        S0 + 5'd11, S1 + 5'd11, S2 + 5'd11: begin n_b_run = 1'b1; n_b_k = 3'd5; end
+        S0 + 5'd12, S1 + 5'd12, S2 + 5'd12: begin n_b_run = 1'b1; n_b_k = 3'd6; end
         default: ;
         endcase
         case (phase_nx)
+        S0 + 5'd13, S1 + 5'd13, S2 + 5'd13: n_c_pre = 1'b1;
         `TMC429_PH_COMMIT(0): n_c_out = 3'b001;
         `TMC429_PH_COMMIT(1): n_c_out = 3'b010;
         `TMC429_PH_COMMIT(2): n_c_out = 3'b100;
@@ -114,10 +117,10 @@ module tmc429_vtarget #(
         if (rst) begin
             // phase 0 after reset
             a_snap <= 1'b1; a_c <= 1'b0; a_mul <= 1'b0; b_load <= 1'b0; b_run <= 1'b0;
-            c_out <= 3'd0; a_m <= 2'd0; b_k <= 3'd0;
+            c_pre <= 1'b0; c_out <= 3'd0; a_m <= 2'd0; b_k <= 3'd0;
         end else begin
             a_snap <= n_a_snap; a_c <= n_a_c; a_mul <= n_a_mul; b_load <= n_b_load;
-            b_run <= n_b_run; c_out <= n_c_out; a_m <= n_a_m; b_k <= n_b_k;
+            b_run <= n_b_run; c_pre <= n_c_pre; c_out <= n_c_out; a_m <= n_a_m; b_k <= n_b_k;
         end
     end
 
@@ -185,8 +188,8 @@ module tmc429_vtarget #(
     reg [11:0] a_vtg;
     reg [4:0]  a_h;
     reg        a_sgn, a_zero;
-    reg [18:0] a_cv;              // c
-    reg [9:0]  a_w;               // multiplier word, consumed from the top
+    reg [20:0] a_cv;              // c << u
+    reg [7:0]  a_w;               // multiplier word p_mul, consumed from the top
     reg [28:0] acc;
 
     wire        dx_neg = a_dx[23];
@@ -203,15 +206,15 @@ module tmc429_vtarget #(
     // u: RAMP 1-e; SOFT 2, 1, 0, 0 for pdiv[1:0] = 0..3
     wire [1:0]  u = a_soft ? (a_pdiv[1] ? 2'd0 : (a_pdiv[0] ? 2'd1 : 2'd2))
                            : {1'b0, ~a_pdiv[0]};
-    wire [9:0]  w0 = {2'b00, 1'b1, a_pmul} << u;
-    wire [28:0] h1 = {acc[26:0], 2'b00} + (a_w[9] ? {9'd0, a_cv, 1'b0} : 29'd0);
-    wire [28:0] h2 = h1 + (a_w[8] ? {10'd0, a_cv} : 29'd0);
+    wire [20:0] cv_u = {2'b00, c_val} << u;
+    wire [28:0] h1 = {acc[26:0], 2'b00} + (a_w[7] ? {7'd0, a_cv, 1'b0} : 29'd0);
+    wire [28:0] h2 = h1 + (a_w[6] ? {8'd0, a_cv} : 29'd0);
 
     always @(posedge clk) begin
         if (rst) begin
             a_dx <= 24'd0; a_rm <= 2'd0; a_soft <= 1'b0;
             a_vtg <= 12'd0; a_h <= 5'd0;
-            a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 19'd0; a_w <= 10'd0; acc <= 29'd0;
+            a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 21'd0; a_w <= 8'd0; acc <= 29'd0;
         end else if (run) begin
             if (a_snap) begin
                 a_dx <= sx_t - sx_a;     // C43: 24-bit wrap-around
@@ -223,13 +226,13 @@ module tmc429_vtarget #(
             if (a_c) begin
                 a_sgn  <= dx_neg;
                 a_zero <= a_dx == 24'd0;
-                a_cv   <= c_val;
-                a_w    <= w0;
+                a_cv   <= cv_u;
+                a_w    <= {1'b1, a_pmul};
                 acc    <= 29'd0;
             end
             if (a_mul) begin
                 acc <= h2;
-                a_w <= {a_w[7:0], 2'b00};
+                a_w <= {a_w[5:0], 2'b00};
             end
         end
     end
@@ -253,7 +256,7 @@ module tmc429_vtarget #(
     reg        sticky;
 
     // control of the motor in A, formed from pdiv at the c cycle (the parameter RAM's output
-    // holds the snapshot until the next snapshot edge, the load cycle) and taken at the load
+    // holds the snapshot until the next snapshot edge, after the load) and taken at the load
     reg        l_odd;
     reg [2:0]  l_ne, l_t;
     always @(posedge clk) begin
@@ -440,10 +443,21 @@ module tmc429_vtarget #(
     /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits and the sign's copy
     wire [14:0] q_h    = ({1'b0, q} ^ {15{b_neg}}) + b_hk;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [11:0] m3     = below ? (b_lo_gt ? b_vmax : b_vmin)
-                       : (above ? b_vmax : q_h[13:2]);
-    // two's complement; none = 0
-    wire [11:0] res    = b_none ? 12'd0 : m3;
+    // in the edge before the commit (c_pre) the comparisons are registered: the result is
+    // (q - h) >> 2 when q lies between the bounds, else the bound (lo when below and
+    // lo <= v_max, else v_max; two's complement), 0 with no target velocity
+    reg  [11:0] c_q, c_bnd;
+    reg         c_use;
+    always @(posedge clk) begin
+        if (rst) begin
+            c_q <= 12'd0;  c_bnd <= 12'd0;  c_use <= 1'b0;
+        end else if (run & c_pre) begin
+            c_q   <= q_h[13:2];
+            c_bnd <= b_none ? 12'd0 : ((below & ~b_lo_gt) ? b_vmin : b_vmax);
+            c_use <= ~b_none & ~below & ~above;
+        end
+    end
+    wire [11:0] res    = c_use ? c_q : c_bnd;
 
     reg [35:0] vt_r;
     wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
