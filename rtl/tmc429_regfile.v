@@ -21,6 +21,8 @@ module tmc429_regfile #(
     input  wire        rst,
     input  wire        exec,
     input  wire [31:0] cmd,
+    input  wire        exec_nx,       // exec and cmd's address byte after this edge
+    input  wire [7:0]  addr_nx,
     input  wire        frame_start,   // synchronized nSCS_C falling edge: wake-up (C66)
     input  wire [6:0]  rd_addr,
     input  wire [5:0]  rd_addr_q,     // the same address, stable one edge earlier (shadow RAM)
@@ -93,6 +95,28 @@ module tmc429_regfile #(
     wire        wr_reg = wr & ~a7[`TMC429_A7_RRS];                      // one of the 64 registers
     wire        wr_mot = wr_reg & ({1'b0, a7[`TMC429_A7_SMDA]} < NMOT3); // of a motor the variant has
 
+    // ---- write strobes one edge ahead -------------------------------------------------
+    // The writes that the frame schedule and the driver side take into next states formed one
+    // edge ahead (power_down, each motor's clk_config, global_parameters, if_configuration) are
+    // flip-flops: decoded from exec and the address byte of the next edge (tmc429_spi_slave),
+    // so in the edge a write executes each equals the decode of exec and cmd above
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [31:0] cmd_nx = {addr_nx, 24'd0};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [6:0]  a7_nx  = cmd_nx[`TMC429_DG_A7];
+    wire        reg_nx = exec_nx & ~cmd_nx[`TMC429_DG_RW] & ~a7_nx[`TMC429_A7_RRS];
+    wire        glb_nx = reg_nx & (a7_nx[`TMC429_A7_SMDA] == `TMC429_SMDA_GLOBAL);
+    reg         w_pd, w_gconf, w_ifconf;
+    always @(posedge clk) begin
+        if (rst) begin
+            w_pd <= 1'b0;  w_gconf <= 1'b0;  w_ifconf <= 1'b0;
+        end else begin
+            w_pd     <= glb_nx & (a7_nx[`TMC429_A7_IDX] == `TMC429_JDX_POWER_DOWN);
+            w_gconf  <= glb_nx & (a7_nx[`TMC429_A7_IDX] == `TMC429_JDX_GLOBAL_PARAMETERS);
+            w_ifconf <= glb_nx & HAS_429 & (a7_nx[`TMC429_A7_IDX] == `TMC429_JDX_IF_CONFIGURATION);
+        end
+    end
+
     // ---- global registers -----------------------------------------------------------
     reg        dw;             // datagram waiting (JDX 0/1 write), CDGW
     reg        cw;             // cover datagram waiting
@@ -135,13 +159,23 @@ module tmc429_regfile #(
             if (!frame[k])
                 ones_d = k[3:0];
     end
+    // the count registered: every tick falls at phase 2 or later (the schedule's test), so it
+    // is formed at least one edge after the frame changed and ones_q is the frame's count
+    // there; the priority encoder is not in the ticks' paths
+    reg  [3:0]  ones_q;
+    always @(posedge clk) begin
+        if (rst)
+            ones_q <= 4'd0;
+        else
+            ones_q <= ones_d;
+    end
     // power_down after this edge (C66): set by a write of it, else cleared by the waking frame
     // start. The ticks include run of the edge after (powered down the core has no tick).
     wire [4:0] ph      = prescaler[4:0];
-    wire pd_nx       = (wr_g & (jdx == `TMC429_JDX_POWER_DOWN)) | (pd & ~frame_start);
+    wire pd_nx       = w_pd | (pd & ~frame_start);
     // a frame of the divider a µC write of clk_config in this edge stores (C40)
-    wire r_due_w     = ones_d >= wdata[`TMC429_F_RAMP_DIV];
-    wire p_due_w     = ones_d >= wdata[`TMC429_F_PULSE_DIV];
+    wire r_due_w     = ones_q >= wdata[`TMC429_F_RAMP_DIV];
+    wire p_due_w     = ones_q >= wdata[`TMC429_F_PULSE_DIV];
 
     // ---- read address decode (C10) ---------------------------------------------------------
     // The address is complete in the SPI input register from the edge after the 7th bit, and
@@ -195,11 +229,19 @@ module tmc429_regfile #(
         for (g = 0; g < 3; g = g + 1) begin : mot
             wire present = g < NMOT;
             wire we_m  = wr_mot & (a7[`TMC429_A7_SMDA] == g);
-            wire w_div = we_m & (jdx == `TMC429_IDX_CLK_CONFIG);
+            // a write of this motor's clk_config executes in this edge (one edge ahead, above)
+            reg  w_div;
+            always @(posedge clk) begin
+                if (rst)
+                    w_div <= 1'b0;
+                else
+                    w_div <= reg_nx & present & (a7_nx[`TMC429_A7_SMDA] == g)
+                           & (a7_nx[`TMC429_A7_IDX] == `TMC429_IDX_CLK_CONFIG);
+            end
             // the frame's trailing ones against the divider stored and the one written, each a
             // comparison from flip-flops; the write selects after them
-            wire r_due = w_div ? r_due_w : (ones_d >= m_ramp_div[4*g+3:4*g]);
-            wire p_due = w_div ? p_due_w : (ones_d >= m_pulse_div[4*g+3:4*g]);
+            wire r_due = w_div ? r_due_w : (ones_q >= m_ramp_div[4*g+3:4*g]);
+            wire p_due = w_div ? p_due_w : (ones_q >= m_pulse_div[4*g+3:4*g]);
             localparam [4:0] PH_RAMP = `TMC429_PH_RAMP(g);
             localparam [4:0] PH_PULSE = `TMC429_PH_PULSE(g);
             localparam [4:0] PH_COND = `TMC429_PH_COMMIT(g);
@@ -291,8 +333,6 @@ module tmc429_regfile #(
     assign status  = {int_o, cdgw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
 
     // ---- driver side ------------------------------------------------------------------
-    wire w_gconf  = wr_g & (jdx == `TMC429_JDX_GLOBAL_PARAMETERS);
-    wire w_ifconf = wr_g & HAS_429 & (jdx == `TMC429_JDX_IF_CONFIGURATION);
     assign drv_gconf     = ({23'd0, mot1r} << `TMC429_F_MOT1R) | ({23'd0, refmux} << `TMC429_F_REFMUX)
                          | ({23'd0, cont_update} << `TMC429_F_CONT_UPDATE)
                          | ({16'd0, clk2_div} << `TMC429_F_CLK2_DIV_LSB) | {16'd0, gp_low};

@@ -30,6 +30,10 @@ module tmc429_spi_slave (
     // one-cycle pulse: execute `cmd` (a 32-bit frame ended)
     output wire        exec,
     output wire [31:0] cmd,
+    // exec and the address byte of cmd (RRS, SMDA, IDX, RW) after this edge: a write is known
+    // one edge before it executes, for write strobes that are flip-flops
+    output wire        exec_nx,
+    output wire [7:0]  addr_nx,
     // 1 while the frame is active (output register drives the data pin)
     output wire        active,
     // current data bit
@@ -67,6 +71,7 @@ module tmc429_spi_slave (
     assign frame_start = nscs_fall;
     assign exec        = exec_q;
     assign cmd         = in_sr;
+    assign addr_nx     = (~nscs_fall & sck_rise) ? in_next[31:24] : in_sr[31:24];
     assign active      = ~nscs_h;
     assign sdo         = out_sr[31];
 
@@ -76,13 +81,14 @@ module tmc429_spi_slave (
     // counter clears at the frame start and counts rising SCK_C edges, saturating at 63.
     wire [5:0]  cnt_nx  = nscs_fall ? 6'd0
                         : ((sck_rise & (cnt != 6'd63)) ? cnt + 6'd1 : cnt);
+    assign exec_nx      = nscs_s & ~nscs_q & (cnt_nx == 6'd32);
     always @(posedge clk) begin
         if (rst) begin
             cnt    <= 6'd0;
             exec_q <= 1'b0;
         end else begin
             cnt    <= cnt_nx;
-            exec_q <= nscs_s & ~nscs_q & (cnt_nx == 6'd32);
+            exec_q <= exec_nx;
         end
     end
 

@@ -59,13 +59,16 @@ mod tests {
     /// The RTL's pipelines rest on the lanes' shape: every lane VT_CYCLES from its snapshot to
     /// its commit (the target-velocity unit's stages), and the ramp tick's operands,
     /// registered in the edge before the tick (`rtl/tmc429_accel.v`), take a target committed
-    /// in an earlier edge.
+    /// in an earlier edge; the ticks, formed in the edge before them from the frame's count of
+    /// trailing ones registered one edge earlier (`rtl/tmc429_regfile.v`), fall at phase 2 or
+    /// later, so that the count is the frame's.
     #[test]
     fn every_lane_has_the_same_shape() {
         for m in 0..3 {
             assert_eq!(PHASE_COMMIT[m] - PHASE_SNAPSHOT[m], VT_CYCLES, "motor {m}");
             assert!(PHASE_RAMP[m] >= PHASE_COMMIT[m] + 2, "motor {m}");
             assert!(PHASE_PULSE[m] < 32, "motor {m}");
+            assert!(PHASE_RAMP[m] >= 2 && PHASE_PULSE[m] >= 2, "motor {m}");
         }
     }
 }
