@@ -5,7 +5,7 @@
 // bits 11..6, as a RAM datagram addresses them (TMC428 Table 10-1). The array has no reset
 // (it maps to a RAM). The power-on contents come from a ROM (C30): in the 65 edges after
 // reset a sweep copies the ROM into the array, one word per edge (the ROM read one edge
-// ahead of the write), and until a word is copied a read of it returns the ROM value. No µC
+// ahead of the write), and until the sweep is done a µC read returns the ROM value. No µC
 // write can meet the sweep: a frame needs the synchronized nSCS_C falling edge (3 edges after
 // reset at the earliest) and 32 rising SCK_C edges at least 2 edges apart before it executes
 // (C4, C10, C12), i.e. not before the 67th edge; the sweep's last write is at the 65th.
@@ -16,8 +16,11 @@
 // write (no µC write executes inside a frame), so this copy needs no read/write collision
 // logic (no_rw_check). Port 2 (driver chain, C80) addresses one 6-bit cell and is
 // synchronous with a read enable: `rdata2` is the cell as it was before the last edge with
-// `re2` (a write in that edge is not seen). The ROM is a case table read synchronously, so
-// it maps to block RAM as well (rom_style).
+// `re2` (a write in that edge is not seen). The chain reads no cell before the sweep is
+// done: it reads only inside a datagram, which needs a request (C83): a step (V is 0 until a
+// µC write), a cover datagram or a continuous update (both off until a µC write), so not
+// before the first µC write; port 2 therefore reads the array alone. The ROM is a case
+// table read synchronously by port 1, so it maps to block RAM as well (rom_style).
 // ROM (CHIP = 1, TMC429, and CHIP = 2, TMC4210, whose contents are not published): cells
 // 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD positions (TMC429 §11.4.2), cells
 // 36..63 = 0, cells 64..127 = the sine table of TMC428 Table 12-2, y(i) = min(63, int(1/2 +
@@ -62,11 +65,10 @@ module tmc429_ram #(
             sw_v <= ~sw_c[6];
         end
     end
-    // word w holds its contents: the sweep is done, or it copies a word above w now
-    function valid;
-        input [5:0] w;
-        valid = sw_v ? (w < sw_a) : sw_c[6];
-    endfunction
+    // every word holds its contents once the sweep's last write is done. Until then a read
+    // takes the ROM value: no µC write can come before the sweep ends, so a word copied
+    // already holds that value as well, and no address is compared with the sweep's
+    wire        swept = sw_c[6] & ~sw_v;
 
     wire        wr_e = sw_v | we;
     wire [5:0]  wr_a = sw_v ? sw_a : waddr;
@@ -150,29 +152,26 @@ module tmc429_ram #(
         if (rst)
             w1 <= 1'b0;
         else
-            w1 <= valid(raddr);
+            w1 <= swept;
     end
     assign rdata = w1 ? q1 : rom1;
 
     // ---- port 2 -----------------------------------------------------------------------
+    // The chain reads no cell before the sweep is done (see the top), so this port has no
+    // ROM fallback: the word it reads holds its contents.
     reg [11:0] q2;
-    reg        w2;
-    reg [6:0]  a2;
+    reg        h2;                 // the cell's half of the word
     always @(posedge clk) begin
         if (re2)
             q2 <= mem[raddr2[6:1]];
     end
     always @(posedge clk) begin
-        if (rst) begin
-            w2 <= 1'b0;
-            a2 <= 7'd0;
-        end else if (re2) begin
-            w2 <= valid(raddr2[6:1]);
-            a2 <= raddr2;
-        end
+        if (rst)
+            h2 <= 1'b0;
+        else if (re2)
+            h2 <= raddr2[0];
     end
-    wire [11:0] word2 = w2 ? q2 : ((CHIP != 0) ? rom_word(a2[6:1]) : 12'h000);
-    assign rdata2 = a2[0] ? word2[11:6] : word2[5:0];
+    assign rdata2 = h2 ? q2[11:6] : q2[5:0];
 endmodule
 
 `default_nettype wire
