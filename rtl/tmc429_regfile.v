@@ -26,6 +26,7 @@ module tmc429_regfile #(
     input  wire        frame_start,   // synchronized nSCS_C falling edge: wake-up (C66)
     input  wire [6:0]  rd_addr,
     input  wire [5:0]  rd_addr_q,     // the same address, stable one edge earlier (shadow RAM)
+    input  wire        rd_load,       // the SPI slave loads rd_data in this edge
     output reg  [23:0] rd_data,
     input  wire [2:0]  ref_q,         // synchronized REF3..1
     input  wire [2:0]  refr_q,        // synchronized REFR3..1
@@ -537,8 +538,13 @@ module tmc429_regfile #(
     wire [11:0] v_inc  = v_sel[19:8] + 12'd1;     // the rounding selects after the increment
     wire [11:0] v_rd   = (v_sel[19] & (v_sel[7:0] != 8'd0)) ? v_inc : v_sel[19:8];
     wire [23:0] st_va  = st_data | {12'd0, {12{rq_va}} & v_rd};
+    // rd_data is 0 outside the edge that loads it (rd_load): the value matters in that edge
+    // alone, and a simulator then evaluates the multiplexer only when a read takes it (the
+    // SPI slave's load already selects on rd_load, so synthesis forms the same logic)
     always @(*) begin
-        if (rq_ram)
+        if (!rd_load)
+            rd_data = 24'd0;
+        else if (rq_ram)
             rd_data = ({18'd0, ram_rdata[11:6]} << `TMC429_F_RAM_ODD_LSB)
                     | ({18'd0, ram_rdata[5:0]} << `TMC429_F_RAM_EVEN_LSB);
         else

@@ -25,6 +25,9 @@ module tmc429_spi_slave (
     // least one edge before the read data is loaded, for a synchronous (block RAM) read
     output wire [5:0]  rd_addr_q,
     input  wire [23:0] rd_data,
+    // the read data is loaded in this edge (the 8th bit of a read arrives): rd_data is used
+    // in no other edge
+    output wire        rd_load,
     // synchronized nSCS_C falling edge (frame start, wake-up from power down)
     output wire        frame_start,
     // one-cycle pulse: execute `cmd` (a 32-bit frame ended)
@@ -64,7 +67,7 @@ module tmc429_spi_slave (
 
     wire [31:0] in_next = {in_sr[30:0], sdi_q};
     // the 8th bit arrives now and it is a read
-    wire        rd_load = sck_rise & (cnt == 6'd7) & sdi_q;
+    assign      rd_load = sck_rise & (cnt == 6'd7) & sdi_q;
 
     assign rd_addr     = in_next[7:1];
     assign rd_addr_q   = in_sr[5:0];
