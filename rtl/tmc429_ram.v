@@ -19,8 +19,8 @@
 // `re2` (a write in that edge is not seen). The chain reads no cell before the sweep is
 // done: it reads only inside a datagram, which needs a request (C83): a step (V is 0 until a
 // µC write), a cover datagram or a continuous update (both off until a µC write), so not
-// before the first µC write; port 2 therefore reads the array alone. The ROM is a case
-// table read synchronously by port 1, so it maps to block RAM as well (rom_style).
+// before the first µC write; port 2 therefore reads the array alone. The ROM, a case table
+// that the sweep and port 1 read synchronously, maps to block RAM as well (rom_style).
 // ROM (CHIP = 1, TMC429, and CHIP = 2, TMC4210, whose contents are not published): cells
 // 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD positions (TMC429 §11.4.2), cells
 // 36..63 = 0, cells 64..127 = the sine table of TMC428 Table 12-2, y(i) = min(63, int(1/2 +
