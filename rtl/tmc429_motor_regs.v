@@ -71,6 +71,7 @@ module tmc429_motor_regs #(
     wire [11:0] v_actual;     // formed once for all motors in the read path (tmc429_regfile)
     /* verilator lint_on UNUSEDSIGNAL */
 
+    localparam [7:0] COND_RESET = 8'b0011_0101;   // POS_END, REF_MISS, STOP_LEFT_LOW, STOP_RIGHT_LOW
     localparam HAS_CUR_SCALE = `TMC429_HAS(`TMC429_CHIPS_CURRENT_SCALING, CHIP);   // TMC4210: absent
     localparam HAS_USTEP     = `TMC429_HAS(`TMC429_CHIPS_USTEP_COUNT, CHIP);       // TMC428: unused
 
@@ -86,7 +87,7 @@ module tmc429_motor_regs #(
         .v_hold(v_hold), .stop_soft(stop_soft),
         .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .v_actual(v_actual));
 
-    // ---- interrupt conditions (C63), from the old state of the condition slot -----------
+    // ---- interrupt conditions (C63), from the old state of the edge before the slot ------
     wire        sel_sw   = ref_conf[`TMC429_F_REF_RNL - `TMC429_F_DISABLE_STOP_L] ? sw_r : sw_l;   // REF_RnL
     wire        x_ge_tol = ~tol_ok;                             // |x_actual| >= tolerance
     wire [7:0]  cond = {
@@ -99,8 +100,10 @@ module tmc429_motor_regs #(
         sel_sw & x_ge_tol,          // 1 REF_WRONG
         xeqt                        // 0 POS_END
     };
+    // registered in every edge: the slot applies the conditions of the edge before it (C52)
+    reg  [7:0] cond_q;
     wire       slot   = run & cond_tick;
-    wire [7:0] events = slot ? (cond & ~int_hist) : 8'd0;
+    wire [7:0] events = slot ? (cond_q & ~int_hist) : 8'd0;
 
     wire       w_int   = we & (widx == `TMC429_IDX_INTERRUPT);
     wire [7:0] mask_nx = w_int ? wdata[`TMC429_F_INTERRUPT_MASK] : int_mask;
@@ -119,13 +122,15 @@ module tmc429_motor_regs #(
             drv_conf <= `TMC429_RESET_CURRENT_SCALING;
             ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
-            int_hist <= 8'b0011_0101;   // the conditions of the reset state: no event at power-on
+            int_hist <= COND_RESET;     // the conditions of the reset state: no event at power-on
+            cond_q <= COND_RESET;
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
             dx_ref_tolerance <= 12'd0;
             tol_k <= 13'd4096;
         end else begin
+            cond_q <= cond;
             if (slot)
-                int_hist <= cond;
+                int_hist <= cond_q;
             int_mask  <= mask_nx;
             int_flags <= ((int_flags & ~w1c) | events) & mask_nx;   // C3, C26
             if (we) begin

@@ -7,15 +7,16 @@
 // functions of its registers and inputs. The port list is the boundary at which test vectors of
 // the unit are taken (rtl/README.md).
 //
-// In the motor's condition slot (cond_tick: its commit phase, every frame) with run = 1,
-// from the old state:
+// The conditions of the old state are registered in every edge, so that the motor's condition
+// slot (cond_tick: its commit phase, every frame) with run = 1 applies those of the edge before
+// it (C52):
 //   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol, stop_R
 //                  symmetric; tol = |x_actual| < dx_ref_tolerance masks both switches
 //   stop flops     stop_hard := at_stop (RAMP/SOFT, x_actual = x_target, |V|>>8 <= v_min, C52)
 //                  | (stop & !SOFT_STOP); stop_soft := stop & SOFT_STOP (C61): the conditions
-//                  of the slot act from the next edge to the next slot's
+//                  act from the edge after the slot to the next slot's
 //   latch (C62)    lp & V_ACTUAL != 0 & selected switch changed since the last slot:
-//                  x_latched := x_actual, lp := 0
+//                  x_latched := x_actual (of the slot's old state), lp := 0
 // Per cycle with run = 1, from the old state:
 //   ramp tick      (ramp_tick, rm != HOLD) V, a_actual := the results of tmc429_accel, which
 //                  moves V toward T = 256*vt (0 while stop_soft) by at most a_max, shared by
@@ -80,6 +81,9 @@ module tmc429_ramp #(
 );
     reg ref_prev;
     reg stop_hard;                   // registered hard stop action (C52, C61)
+    // the conditions of the edge before, which the condition slot applies (C52): the stop
+    // actions, the selected switch and the latch
+    reg c_hard, c_soft, c_sel, c_latch;
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -174,13 +178,18 @@ module tmc429_ramp #(
             ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
             stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
+            c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
         end else begin
+            c_hard  <= at_stop | (stop & ~soft_sw);
+            c_soft  <= stop & soft_sw;
+            c_sel   <= sel;
+            c_latch <= lp & va_nz & (sel != ref_prev);
             if (run) begin
                 if (cond_tick) begin
-                    ref_prev <= sel;
-                    stop_hard <= at_stop | (stop & ~soft_sw);
-                    stop_soft <= stop & soft_sw;
-                    if (lp & va_nz & (sel != ref_prev)) begin
+                    ref_prev <= c_sel;
+                    stop_hard <= c_hard;
+                    stop_soft <= c_soft;
+                    if (c_latch) begin
                         x_latched <= x_actual;
                         lp <= 1'b0;
                     end

@@ -315,7 +315,8 @@ module tmc429_regfile #(
         endcase
     end
     wire pc_match = HAS_429 && (pc_x == pos_comp);
-    wire pc_event = run & pc_match & ~pc_hist;
+    // I follows the registered match (the POSCMP level): a rising edge between running edges
+    wire pc_event = run & poscmp_q & ~pc_hist;
     wire w_pcint  = wr_g & HAS_429 & (jdx == `TMC429_JDX_POS_COMP_INT);
     wire pc_m_nx  = w_pcint ? wdata[`TMC429_F_POS_COMP_INT_M] : pc_m;
     wire pc_w1c   = w_pcint & wdata[`TMC429_F_POS_COMP_INT_I];
@@ -367,7 +368,7 @@ module tmc429_regfile #(
             dw <= 1'b0;  cw <= 1'b0;
             cover_pos <= 6'd63;  cover_len <= 5'd0;  cov_late <= 1'b0;   // stored +1 = 0 (C29)
             if_conf <= 9'd0;  pos_comp <= 24'd0;
-            pc_i <= 1'b0;  pc_m <= 1'b0;  pc_hist <= HAS_429;   // match holds at reset
+            pc_i <= 1'b0;  pc_m <= 1'b0;  pc_hist <= HAS_429;   // the match holds at reset
             gp_low <= 8'd0;  clk2_div <= GCONF_RST[`TMC429_F_CLK2_DIV];
             cont_update <= 1'b0;  refmux <= 1'b0;  mot1r <= 1'b0;
             pd <= 1'b0;
@@ -380,7 +381,7 @@ module tmc429_regfile #(
             poscmp_q <= pc_match;
             if (run) begin
                 prescaler <= prescaler + 20'd1;
-                pc_hist   <= pc_match;
+                pc_hist   <= poscmp_q;
             end
             pc_m <= pc_m_nx;
             pc_i <= ((pc_i & ~pc_w1c) | pc_event) & pc_m_nx;

@@ -376,9 +376,10 @@ impl Tmc429 {
 
     /// Fast path, exactly equivalent to the full edge (tests/fast_path.rs): the pins are settled
     /// in the synchronizers (no SPI edge in flight, no switch change), the motion core is quiet,
-    /// and this phase of the frame has nothing to do: no condition slot of a motor (C52, C61–C63:
-    /// its commit phase) whose conditions differ from those its last slot registered, no
-    /// snapshot that changes a target, no ramp tick, no pulse tick that adds to an accumulator.
+    /// and this phase of the frame has nothing to do: no edge before a motor's condition slot that
+    /// takes other conditions than those it holds, no condition slot (C52, C61–C63: its commit
+    /// phase) whose conditions differ from those its last slot registered, no snapshot that
+    /// changes a target, no ramp tick, no pulse tick that adds to an accumulator.
     /// Then the edge only advances the counters.
     #[inline]
     fn idle_edge(&self, pins: u16) -> bool {
@@ -400,9 +401,14 @@ impl Tmc429 {
             _ => true,
         };
         if let Some(i) = schedule::lane_of(&PHASE_COMMIT, p).filter(|&i| i < n) {
+            if !ramp::settled(&self.motors[i]) {
+                return false;
+            }
+        }
+        if let Some(i) = schedule::lane_of(&schedule::PHASE_SAMPLE, p).filter(|&i| i < n) {
             let (left, right) = self.switches();
             let m = &self.motors[i];
-            if !ramp::settled(m, m.vt, (left >> i) & 1 != 0, (right >> i) & 1 != 0) {
+            if !ramp::sample_settled(m, m.vt, (left >> i) & 1 != 0, (right >> i) & 1 != 0) {
                 return false;
             }
         }
@@ -461,9 +467,17 @@ impl Tmc429 {
                 self.quiet = self.motors == before;
                 self.quiet_pins = inputs;
             }
-            pc_event = match_old && !self.global.pc_match_prev;
-            self.global.pc_match_prev = match_old;
+            // C65: the flag follows the registered match (the POSCMP level)
+            pc_event = self.global.pc_match_q && !self.global.pc_match_prev;
+            self.global.pc_match_prev = self.global.pc_match_q;
             self.prescaler = schedule::next(self.prescaler);
+        } else {
+            // the edge before a condition slot takes its conditions while powered down too
+            self.sample_powered_down(pins);
+        }
+        if self.global.pc_match_q != match_old {
+            self.global.pc_match_q = match_old;
+            self.quiet = false;
         }
 
         if let Some(d) = exec {
@@ -528,10 +542,25 @@ impl Tmc429 {
             // The ramp and pulse generator uses the committed target of the old state (C41).
             let vt = m.vt;
             vtarget::edge(m, i, schedule::phase(c));
+            let sample_tick = schedule::sample_tick(schedule::next(c), i);
             let cond_tick = schedule::cond_tick(c, i);
             let ramp_tick = schedule::ramp_tick(c, i, m.ramp_div);
             let pulse_tick = schedule::pulse_tick(c, i, m.pulse_div);
-            events[i] = ramp::edge(m, vt, cond_tick, ramp_tick, pulse_tick, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
+            let (l, r) = ((left >> i) & 1 != 0, (right >> i) & 1 != 0);
+            events[i] = ramp::edge(m, vt, sample_tick, cond_tick, ramp_tick, pulse_tick, l, r);
+        }
+    }
+
+    /// A powered-down edge whose pre-divider stays in a motor's condition slot takes that slot's
+    /// conditions from the old state (C52, C66): the slot of the first running edge applies
+    /// those of the edge before it.
+    fn sample_powered_down(&mut self, pins: u16) {
+        let c = self.prescaler;
+        let n = self.motor_count();
+        if let Some(i) = schedule::lane_of(&PHASE_COMMIT, schedule::phase(c)).filter(|&i| i < n) {
+            let (left, right) = switches::levels(self.chip, &self.global, pins);
+            let m = &mut self.motors[i];
+            m.cond_next = ramp::evaluate(m, m.vt, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
         }
     }
 }

@@ -97,6 +97,28 @@ pub struct Motor {
     /// Registered soft stop action (C61): set from the old state of the last running cycle
     /// when a switch stop held with SOFT_STOP; while set, the ramp target T is 0 (C51).
     pub stop_soft: bool,
+    /// The conditions taken in the edge before the motor's condition slot, which the slot
+    /// applies (C52, C61–C63).
+    pub cond_next: Conditions,
+}
+
+/// What a motor's condition slot applies, taken from the old state of the edge before the slot
+/// (C52, C61–C63): the interrupt conditions (C63), the REF_RnL-selected switch and whether it
+/// latches (C62), and the stop actions to register (C52, C61).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Conditions {
+    pub cond: u8,
+    pub sel: bool,
+    /// lp ∧ V_ACTUAL ≠ 0 ∧ the selected switch differs from the last slot's (C62).
+    pub latch: bool,
+    pub stop_hard: bool,
+    pub stop_soft: bool,
+}
+
+impl Conditions {
+    /// The conditions of the reset state (the history flops' values, C63): no event, no latch,
+    /// no stop action.
+    pub const RESET: Conditions = Conditions { cond: COND_RESET, sel: false, latch: false, stop_hard: false, stop_soft: false };
 }
 
 /// Interrupt conditions of the reset state: POS_END (x_actual = x_target = 0), REF_MISS
@@ -140,6 +162,7 @@ impl Motor {
             ref_prev: false,
             stop_hard: false,
             stop_soft: false,
+            cond_next: Conditions::RESET,
         }
     }
 

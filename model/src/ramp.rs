@@ -6,20 +6,25 @@
 use crate::accel;
 use crate::motor::*;
 
-/// One edge of motor `m`'s ramp and pulse generator from the old state (C1): in the motor's
-/// condition slot (`cond_tick`, its commit phase, C41) the conditions of the switch stop,
-/// stop at target, latch and interrupts and their registered actions ([`conditions`]; the
-/// interrupt events are returned, 0 outside the slot); the ramp tick (C51, with `ramp_tick` in
-/// any mode; HOLD_MODE makes none) and the pulse tick (C53) under the stop actions of the old
-/// state. `vt` is the committed target velocity of the old state (C41), `l` and `r` the motor's
-/// switches after mapping (C60). The ramp tick's arithmetic is [`accel::tick`]
-/// (`rtl/tmc429_accel.v`, shared by the three motors).
+/// One edge of motor `m`'s ramp and pulse generator from the old state (C1): in the edge before
+/// the motor's condition slot (`sample_tick`) the conditions of the switch stop, stop at target,
+/// latch and interrupts are taken into registers ([`evaluate`]); in the slot (`cond_tick`, its
+/// commit phase, C41) they act ([`conditions`]; the interrupt events are returned, 0 outside the
+/// slot); the ramp tick (C51, with `ramp_tick` in any mode; HOLD_MODE makes none) and the pulse
+/// tick (C53) under the stop actions of the old state. `vt` is the committed target velocity of
+/// the old state (C41), `l` and `r` the motor's switches after mapping (C60). The ramp tick's
+/// arithmetic is [`accel::tick`] (`rtl/tmc429_accel.v`, shared by the three motors).
 #[inline]
-pub fn edge(m: &mut Motor, vt: i32, cond_tick: bool, ramp_tick: bool, pulse_tick: bool, l: bool, r: bool) -> u8 {
+#[allow(clippy::too_many_arguments)]
+pub fn edge(m: &mut Motor, vt: i32, sample_tick: bool, cond_tick: bool, ramp_tick: bool, pulse_tick: bool, l: bool, r: bool) -> u8 {
     let v_old = m.v;
     // The stop actions of this edge are the registered conditions of the last slot (C52, C61).
     let (stop_hard, stop_soft) = (m.stop_hard, m.stop_soft);
-    let events = if cond_tick { conditions(m, vt, l, r) } else { 0 };
+    let sampled = if sample_tick { Some(evaluate(m, vt, l, r)) } else { None };
+    let events = if cond_tick { conditions(m) } else { 0 };
+    if let Some(c) = sampled {
+        m.cond_next = c;
+    }
     if ramp_tick && m.rm != HOLD_MODE {
         // The arithmetic is the unit shared by the motors' staggered ticks (C41).
         let (v_new, a_actual) = accel::tick(v_old, vt, stop_soft, m.a_max);
@@ -45,19 +50,8 @@ pub fn edge(m: &mut Motor, vt: i32, cond_tick: bool, ramp_tick: bool, pulse_tick
     events
 }
 
-/// What motor `m`'s condition slot takes from the old state (C52, C61–C63): the interrupt
-/// conditions (C63), the REF_RnL-selected switch (C62) and the stop actions to register (C52,
-/// C61).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Conditions {
-    pub cond: u8,
-    pub sel: bool,
-    pub stop_hard: bool,
-    pub stop_soft: bool,
-}
-
 /// The conditions of motor `m` from its old state, `vt`, `l`, `r` as in [`edge`] (nothing
-/// changes).
+/// changes): what its condition slot applies when taken in the edge before it (C52, C61–C63).
 #[inline]
 pub fn evaluate(m: &Motor, vt: i32, l: bool, r: bool) -> Conditions {
     let sel = if m.ref_conf & REF_RNL != 0 { r } else { l };
@@ -71,30 +65,39 @@ pub fn evaluate(m: &Motor, vt: i32, l: bool, r: bool) -> Conditions {
         | (((m.x_actual == 0 && !sel) as u8) * INT_REF_MISS)
         | ((stop as u8) * INT_STOP)
         | ((!l as u8) * INT_STOP_LEFT_LOW)
-        | (!r as u8) * INT_STOP_RIGHT_LOW
-        | (l as u8) * INT_STOP_LEFT_HIGH
-        | (r as u8) * INT_STOP_RIGHT_HIGH;
-    Conditions { cond, sel, stop_hard: stop_at_target || (stop && !soft), stop_soft: stop && soft }
+        | ((!r as u8) * INT_STOP_RIGHT_LOW)
+        | ((l as u8) * INT_STOP_LEFT_HIGH)
+        | ((r as u8) * INT_STOP_RIGHT_HIGH);
+    // Latch (C62): "takes effect only during motion (when V_ACTUAL ≠ 0)".
+    let latch = m.lp && m.v_actual() != 0 && sel != m.ref_prev;
+    Conditions { cond, sel, latch, stop_hard: stop_at_target || (stop && !soft), stop_soft: stop && soft }
 }
 
-/// Whether motor `m`'s condition slot would change nothing: the conditions are those the last
-/// slot registered (no event, no latch, the same stop actions).
+/// Whether the edge before motor `m`'s condition slot would take the conditions it holds
+/// already (nothing changes).
 #[inline]
-pub fn settled(m: &Motor, vt: i32, l: bool, r: bool) -> bool {
-    let c = evaluate(m, vt, l, r);
-    c == Conditions { cond: m.cond_prev, sel: m.ref_prev, stop_hard: m.stop_hard, stop_soft: m.stop_soft }
+pub fn sample_settled(m: &Motor, vt: i32, l: bool, r: bool) -> bool {
+    evaluate(m, vt, l, r) == m.cond_next
 }
 
-/// Motor `m`'s condition slot (C52, C61–C63): the interrupt conditions' rising edges against the
-/// last slot's (C63, returned), the latch on a change of the selected switch since the last slot
-/// (C62), and the stop actions registered for the edges up to the next slot (C52, C61).
+/// Whether motor `m`'s condition slot would change nothing: the conditions taken before it are
+/// those the last slot registered (no event, no latch, the same stop actions).
 #[inline]
-pub fn conditions(m: &mut Motor, vt: i32, l: bool, r: bool) -> u8 {
-    let c = evaluate(m, vt, l, r);
+pub fn settled(m: &Motor) -> bool {
+    let c = m.cond_next;
+    !c.latch && c.cond == m.cond_prev && c.sel == m.ref_prev && c.stop_hard == m.stop_hard && c.stop_soft == m.stop_soft
+}
+
+/// Motor `m`'s condition slot (C52, C61–C63), from the conditions taken in the edge before it:
+/// the interrupt conditions' rising edges against the last slot's (C63, returned), the latch
+/// (C62: x_latched := x_actual of the slot's old state) and the stop actions registered for
+/// the edges up to the next slot (C52, C61).
+#[inline]
+pub fn conditions(m: &mut Motor) -> u8 {
+    let c = m.cond_next;
     let events = c.cond & !m.cond_prev;
     m.cond_prev = c.cond;
-    // Latch (C62): "takes effect only during motion (when V_ACTUAL ≠ 0)".
-    if m.lp && m.v_actual() != 0 && c.sel != m.ref_prev {
+    if c.latch {
         m.x_latched = m.x_actual;
         m.lp = false;
     }

@@ -16,7 +16,9 @@ pub struct Global {
     /// pos_comp_int mask M and flag I.
     pub pc_m: bool,
     pub pc_i: bool,
-    /// History flop of the position match (C65).
+    /// The position match registered in every edge (C65: the POSCMP level).
+    pub pc_match_q: bool,
+    /// History flop of the registered match, in the running edges (C65).
     pub pc_match_prev: bool,
     /// Cover position (the register holds it + 1 mod 64, which is what reads back, C29).
     pub cover_pos: u8,
@@ -51,6 +53,7 @@ impl Global {
             pos_comp: 0,
             pc_m: false,
             pc_i: false,
+            pc_match_q: true,
             pc_match_prev: true,
             // The register stores COVER_POS + 1 and resets to 0 (C29): position 63.
             cover_pos: 63,

@@ -17,10 +17,14 @@ pub const PHASE_SNAPSHOT: [u32; 3] = [0, 7, 14];
 pub const PHASE_COMMIT: [u32; 3] = [14, 21, 28];
 pub const PHASE_RAMP: [u32; 3] = [16, 23, 30];
 pub const PHASE_PULSE: [u32; 3] = [17, 24, 31];
+/// The phase before each condition slot: the edge that takes the slot's conditions (C52).
+pub const PHASE_SAMPLE: [u32; 3] = [PHASE_COMMIT[0] - 1, PHASE_COMMIT[1] - 1, PHASE_COMMIT[2] - 1];
 
-/// The phases in which some motor's snapshot, commit, ramp tick or pulse tick falls, bit p =
-/// phase p: in the other phases the motion core only follows its switches and writes.
-pub const SLOT_PHASES: u32 = lane_mask(&PHASE_SNAPSHOT) | lane_mask(&PHASE_COMMIT) | lane_mask(&PHASE_RAMP) | lane_mask(&PHASE_PULSE);
+/// The phases in which some motor's snapshot, commit, ramp tick or pulse tick falls or its
+/// condition slot's conditions are taken, bit p = phase p: in the other phases the motion core
+/// only follows its switches and writes.
+pub const SLOT_PHASES: u32 =
+    lane_mask(&PHASE_SNAPSHOT) | lane_mask(&PHASE_COMMIT) | lane_mask(&PHASE_RAMP) | lane_mask(&PHASE_PULSE) | lane_mask(&PHASE_SAMPLE);
 
 const fn lane_mask(p: &[u32; 3]) -> u32 {
     1 << p[0] | 1 << p[1] | 1 << p[2]
@@ -44,6 +48,14 @@ pub fn due(c: u32, div: u8) -> bool {
 #[inline]
 pub fn cond_tick(c: u32, m: usize) -> bool {
     phase(c) == PHASE_COMMIT[m]
+}
+
+/// The edge that leaves the pre-divider at `c_next` takes motor `m`'s conditions for its
+/// condition slot (C52): the edge before the slot, also while powered down (the slot's conditions
+/// are those of the old state of the edge before it, whatever that edge did).
+#[inline]
+pub fn sample_tick(c_next: u32, m: usize) -> bool {
+    cond_tick(c_next, m)
 }
 
 /// The edge of `c` is a ramp tick of motor `m` with `ramp_div` (its ramp phase of a due frame).

@@ -239,6 +239,33 @@ fn reference_interrupts() {
     assert_eq!(rd(&mut h, 0, INTERRUPT) & 0xFF, 0x10 | 0x04 | 0x01, "REF_MISS, and POS_END (x_target is 0)");
 }
 
+/// C52, C61: the condition slot applies the conditions of the edge before it. A switch that
+/// reaches the old state in the slot's own edge (phase 14) stops the motor one frame later, in
+/// the next slot; one that is there in the edge before (phase 13) stops it in this slot.
+#[test]
+fn switch_stop_takes_the_edge_before_the_slot() {
+    for (lead, slots) in [(2u32, 2u32), (3, 1)] {
+        let mut h = host(Chip::Tmc428);
+        velocity_mode(&mut h, 0, -1000, 2047);
+        h.wait(5000);
+        assert_eq!(h.chip().motor(0).v_actual(), -1000);
+        // C4: a pin set `lead` edges before the slot is in the old state of the slot's edge
+        // (lead 2) or of the edge before it (lead 3)
+        while h.chip().probes().prescaler & 31 != tmc429_model::PHASE_COMMIT[0] - lead {
+            h.wait(1);
+        }
+        set_refs(&mut h, true, false, false);
+        h.wait(lead.into());
+        assert_eq!(h.chip().probes().prescaler & 31, tmc429_model::PHASE_COMMIT[0], "the slot's edge is next");
+        h.wait(1);
+        assert_eq!(h.chip().motor(0).stop_hard, slots == 1, "lead {lead}: after this slot");
+        h.wait(31);
+        assert!(!h.chip().motor(0).stop_hard || slots == 1, "lead {lead}: before the next slot");
+        h.wait(1);
+        assert!(h.chip().motor(0).stop_hard, "lead {lead}: after the next slot");
+    }
+}
+
 /// C65: position compare on TMC429 — POSCMP pin level and the I flag with mask M.
 #[test]
 fn position_compare() {
@@ -258,8 +285,13 @@ fn position_compare() {
         n += 1;
         assert!(n < 100_000);
     }
+    assert!(!c.outputs().poscmp);
     c.tick(&idle);
     assert!(c.outputs().poscmp, "POSCMP one edge after the match");
+    assert!(!c.global().pc_i, "I follows the registered match: not yet");
+    c.tick(&idle);
+    assert!(c.global().pc_i, "I set one edge after POSCMP rises (C65)");
+    assert!(c.int());
     assert_eq!(h.read(global_a7(6)), 0x101, "I set");
     assert_eq!(h.status() & 0x80, 0x80, "INT");
     h.write(global_a7(6), 0x101);
