@@ -26,9 +26,14 @@ module tmc429_current (
     reg [7:0] v0_count;
     reg [1:0] sel;
 
-    wire [11:0] a_abs = a_actual[11] ? (12'd0 - a_actual) : a_actual;
+    // |a_actual| > a_threshold without forming |a_actual|: a >= 0: thr - a < 0; a < 0:
+    // -a > thr, i.e. a + thr < 0 (thr <= 1023, so both fit 12 bits); the sign selects
+    /* verilator lint_off UNUSEDSIGNAL */     // only the signs of the sums are used
+    wire [11:0] d_pos = {2'b00, a_threshold[9:0]} - a_actual;
+    wire [11:0] d_neg = a_actual + {2'b00, a_threshold[9:0]};
+    /* verilator lint_on UNUSEDSIGNAL */
     // Table 8-2: a_threshold > 1023 always selects is_aleat
-    wire        agt   = ~a_threshold[10] & (a_abs > {1'b0, a_threshold});
+    wire        agt   = ~a_threshold[10] & (a_actual[11] ? d_neg[11] : d_pos[11]);
 
     always @(posedge clk) begin
         if (rst) begin

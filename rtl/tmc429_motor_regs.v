@@ -63,8 +63,7 @@ module tmc429_motor_regs #(
     reg [2:0]  usrs;
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
-    reg [11:0] dx_ref_tolerance;
-    reg [12:0] tol_k;          // 4096 - dx_ref_tolerance, for the tolerance window's speed
+    reg [12:0] tol_m1;         // dx_ref_tolerance - 1 (-1 for 0): the tolerance window's form
     wire       lp, stop, tol_ok;
     wire [23:0] x_latched;
     /* verilator lint_off UNUSEDSIGNAL */
@@ -79,7 +78,7 @@ module tmc429_motor_regs #(
     tmc429_ramp #(.HAS_USTEP(HAS_USTEP)) u_ramp (
         .clk(clk), .rst(rst), .run(run), .cond_tick(cond_tick), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
         .rm(rm), .x_target(x_target), .v_min(v_min), .ref_conf(ref_conf),
-        .usrs(usrs), .dx_ref_tolerance(dx_ref_tolerance), .tol_k(tol_k), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
+        .usrs(usrs), .tol_m1(tol_m1), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
         .we(we), .widx(widx), .wdata(wdata),
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
@@ -125,8 +124,7 @@ module tmc429_motor_regs #(
             int_hist <= COND_RESET;     // the conditions of the reset state: no event at power-on
             cond_q <= COND_RESET;
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
-            dx_ref_tolerance <= 12'd0;
-            tol_k <= 13'd4096;
+            tol_m1 <= 13'h1FFF;         // dx_ref_tolerance 0
         end else begin
             cond_q <= cond;
             if (slot)
@@ -149,10 +147,8 @@ module tmc429_motor_regs #(
                            ramp_div <= wdata[`TMC429_F_RAMP_DIV];
                            usrs <= wdata[`TMC429_F_USRS];
                        end
-                `TMC429_IDX_DX_REF_TOLERANCE: begin
-                           dx_ref_tolerance <= wdata[`TMC429_F_DX_REF_TOLERANCE];
-                           tol_k <= 13'd4096 - {1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]};
-                       end
+                `TMC429_IDX_DX_REF_TOLERANCE:
+                       tol_m1 <= {1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]} - 13'd1;
                 // x_actual, v_target, v_actual, x_latched, ustep_count: motion state in
                 // tmc429_ramp; v_max, pmul_pdiv: parameter RAM of tmc429_vtarget; a_actual and
                 // interrupt (above): no storage here

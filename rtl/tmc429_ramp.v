@@ -44,8 +44,7 @@ module tmc429_ramp #(
     input  wire [10:0] v_min,
     input  wire [3:0]  ref_conf,   // REF_RnL, SOFT_STOP, DISABLE_STOP_R, DISABLE_STOP_L
     input  wire [2:0]  usrs,
-    input  wire [11:0] dx_ref_tolerance,
-    input  wire [12:0] tol_k,      // 4096 - dx_ref_tolerance (kept with the register)
+    input  wire [12:0] tol_m1,     // dx_ref_tolerance - 1, two's complement (-1 for 0)
     input  wire [11:0] vt,         // committed target velocity (tmc429_vtarget)
     input  wire        sw_l,       // left and right switch (C60)
     input  wire        sw_r,
@@ -101,11 +100,12 @@ module tmc429_ramp #(
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
     wire        x_hi0 = x_actual[23:12] == 12'h000;
     wire        x_hi1 = x_actual[23:12] == 12'hFFF;
-    // x >= 0: x < tol, i.e. x_lo - tol borrows; x < 0: x + tol > 0, i.e. x_lo + tol > 4096,
-    // i.e. x_lo > k = 4096 - tol (k = tol_k, a register: one carry chain after x_actual)
-    /* verilator lint_off UNUSEDSIGNAL */     // only the borrows of the differences are used
-    wire [12:0] x_dif = {1'b0, x_actual[11:0]} - {1'b0, dx_ref_tolerance};
-    wire [13:0] x_kd  = {1'b0, tol_k} - {2'b00, x_actual[11:0]};
+    // with t = dx_ref_tolerance - 1 (a register, so that each test is one carry chain from
+    // flip-flops): x >= 0: x_lo < tol, i.e. x_lo - t - 1 < 0 (x_lo + ~t); x < 0: |x| =
+    // ~x_lo + 1 < tol, i.e. ~x_lo - t < 0
+    /* verilator lint_off UNUSEDSIGNAL */     // only the signs of the differences are used
+    wire [12:0] x_dif = {1'b0, x_actual[11:0]} + ~tol_m1;
+    wire [13:0] x_kd  = {2'b00, ~x_actual[11:0]} - {tol_m1[12], tol_m1};
     /* verilator lint_on UNUSEDSIGNAL */
     assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_kd[13]);
 
