@@ -81,7 +81,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("ramp-modes", "RAMP_MODE, SOFT_MODE and VELOCITY_MODE moves, a reversal and HOLD_MODE with a v_actual write"),
     ("ramp-boundary", "v_max 2047 / a_max 2047, v_target -2048, a_max 0, v_min > v_max, a move across x = 2^23"),
     ("ramp-p-examples", "RAMP_MODE moves with the pmul/pdiv of the [428] §8.11 method (pmulpdiv.c of [429] §8.1.10.2.3)"),
-    ("ramp-unit", "the ramp unit in few cycles: RAMP_MODE and SOFT_MODE with the [428] §8.11 p example 2047/0/0, a soft switch stop and the latch, VELOCITY_MODE at a_max 2047 across x = 2^23 and back, a_max 0, HOLD_MODE with a v_actual write of -2048, usrs 7, a ustep_count write"),
+    ("ramp-unit", "the ramp unit in few cycles: RAMP_MODE and SOFT_MODE with the [428] §8.11 p example 2047/0/0, a soft switch stop and the latch, VELOCITY_MODE at a_max 2047 across x = 2^23 and back, a_max 0, HOLD_MODE with a v_actual write of -2048, usrs 7, a ustep_count write, the tolerance window at its bounds"),
     ("chain-datasheet", "Table 11-2 configuration, Table 12-2 LUT, the datagrams they give and a cover datagram"),
     ("chain-unit", "the driver-chain master in few cycles: power-on Table 11-2 and LUT, clk2_div 0 (asymmetric SCK_S), a cover datagram of length 0 and one of 12 bits at position 3, i_scale %100, a datagram-word write (CDGW), SDI_S readback, a datagram aborted by en_sd and restarted"),
     ("tables", "lut unit: complete tables, every usrs, both directions, every i_scale, sine and rhomb LUT"),
@@ -282,6 +282,16 @@ fn ramp_unit() -> B {
     b.m(2, 4, 0x800).wait(3000).m(2, 6, 0).wait(300);
     // HOLD_MODE: V only by v_actual writes (-2048 as -2047, C23)
     b.m(2, IDX_RM, HOLD).m(2, 5, 0x800).wait(300).m(2, 5, 0).wait(200);
+    // the tolerance window's bounds (C61): |x_actual| = tol - 1 and tol on both sides, the
+    // largest tolerance at x = -4096 (the window's low bits all 0), tolerance 0 and 1 at 0, -1
+    let bounds: [(u32, &[i32]); 4] =
+        [(100, &[99, 100, -99, -100]), (4095, &[4094, 4095, -4094, -4095, -4096]), (0, &[0, -1]), (1, &[0, 1, -1, 0])];
+    for (tol, xs) in bounds {
+        b.m(2, 13, tol);
+        for &x in xs {
+            b.m(2, 1, x as u32).wait(20);
+        }
+    }
     b
 }
 
