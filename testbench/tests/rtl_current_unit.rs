@@ -5,8 +5,7 @@
 //! is_aleat), and rests of 255 ramp ticks with is_agtat and is_aleat zero and nonzero. After every
 //! edge the RTL's i_scale must be the model's.
 
-use std::path::Path;
-use std::process::Command;
+mod common;
 
 use tmc429_model::current::{CurrentScale, SEL_AGTAT, SEL_ALEAT, SEL_V0};
 use tmc429_model::motor::Motor;
@@ -121,25 +120,11 @@ endmodule
 
 #[test]
 fn current_unit_matches_the_model_at_the_threshold() {
-    let dir = std::env::temp_dir().join(format!("tmc429-current-unit-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
     let (v, seen) = vectors();
     // every selection is made, is_agtat and is_aleat on both sides of the threshold
     assert!(seen[SEL_AGTAT as usize] > 50 && seen[SEL_ALEAT as usize] > 50 && seen[SEL_V0 as usize] > 50, "{seen:?}");
-    let hex: String = v.iter().map(|x| x.hex() + "\n").collect();
-    std::fs::write(dir.join("vectors.hex"), hex).unwrap();
-    std::fs::write(dir.join("tb.v"), BENCH.replace("NVEC", &v.len().to_string())).unwrap();
-    let rtl = Path::new(env!("CARGO_MANIFEST_DIR")).join("../rtl/tmc429_current.v");
-    let st = Command::new("iverilog")
-        .args(["-g2005", "-Wall", "-o", "sim", "tb.v"])
-        .arg(&rtl)
-        .current_dir(&dir)
-        .status()
-        .expect("iverilog (scripts/setup installs it)");
-    assert!(st.success(), "iverilog failed");
-    let out = Command::new("vvp").args(["-n", "sim"]).current_dir(&dir).output().expect("vvp");
-    let text = String::from_utf8_lossy(&out.stdout).to_string();
-    let _ = std::fs::remove_dir_all(&dir);
+    let lines: Vec<String> = v.iter().map(|x| x.hex()).collect();
+    let text = common::icarus_unit("tmc429_current", BENCH, &lines);
     assert!(text.contains(&format!("EDGES {} MISMATCHES 0", v.len())), "{text}");
 }
 

@@ -5,8 +5,7 @@
 //! The co-simulation of the whole chip cannot do this yet: without the motion core no motor
 //! steps.
 
-use std::path::Path;
-use std::process::Command;
+mod common;
 
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -112,25 +111,11 @@ endmodule
 
 #[test]
 fn stepdir_unit_matches_the_model() {
-    let dir = std::env::temp_dir().join(format!("tmc429-stepdir-unit-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
     let v = vectors(1);
     // the stream must exercise the unit: pulses, direction changes, a backlog
     assert!(v.windows(2).filter(|w| !w[0].want_step && w[1].want_step).count() > 1000);
     assert!(v.windows(2).filter(|w| w[0].want_dir != w[1].want_dir).count() > 100);
-    let hex: String = v.iter().map(|x| x.hex() + "\n").collect();
-    std::fs::write(dir.join("vectors.hex"), hex).unwrap();
-    std::fs::write(dir.join("tb.v"), BENCH.replace("NVEC", &v.len().to_string())).unwrap();
-    let rtl = Path::new(env!("CARGO_MANIFEST_DIR")).join("../rtl/tmc429_stepdir.v");
-    let st = Command::new("iverilog")
-        .args(["-g2005", "-Wall", "-o", "sim", "tb.v"])
-        .arg(&rtl)
-        .current_dir(&dir)
-        .status()
-        .expect("iverilog (scripts/setup installs it)");
-    assert!(st.success(), "iverilog failed");
-    let out = Command::new("vvp").args(["-n", "sim"]).current_dir(&dir).output().expect("vvp");
-    let text = String::from_utf8_lossy(&out.stdout).to_string();
-    let _ = std::fs::remove_dir_all(&dir);
+    let lines: Vec<String> = v.iter().map(|x| x.hex()).collect();
+    let text = common::icarus_unit("tmc429_stepdir", BENCH, &lines);
     assert!(text.contains(&format!("EDGES {} MISMATCHES 0", v.len())), "{text}");
 }

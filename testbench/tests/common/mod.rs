@@ -1,0 +1,28 @@
+//! Shared by the unit tests that run one `rtl/` module under Icarus Verilog against vectors of
+//! the model's unit.
+
+use std::path::Path;
+use std::process::Command;
+
+/// Compiles the test bench `bench` (its `NVEC` replaced by the number of `lines`) with
+/// `rtl/<module>.v`, runs it on `lines` as `vectors.hex` in a scratch directory and returns what
+/// it printed.
+pub fn icarus_unit(module: &str, bench: &str, lines: &[String]) -> String {
+    let dir = std::env::temp_dir().join(format!("tmc429-{module}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let hex: String = lines.iter().map(|l| format!("{l}\n")).collect();
+    std::fs::write(dir.join("vectors.hex"), hex).unwrap();
+    std::fs::write(dir.join("tb.v"), bench.replace("NVEC", &lines.len().to_string())).unwrap();
+    let rtl = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../rtl/{module}.v"));
+    let st = Command::new("iverilog")
+        .args(["-g2005", "-Wall", "-o", "sim", "tb.v"])
+        .arg(&rtl)
+        .current_dir(&dir)
+        .status()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(st.success(), "iverilog failed");
+    let out = Command::new("vvp").args(["-n", "sim"]).current_dir(&dir).output().expect("vvp");
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let _ = std::fs::remove_dir_all(&dir);
+    text
+}
