@@ -367,7 +367,10 @@ module tmc429_vtarget #(
     assign q_ld = sqrt_ld(src_l[27:24]);
     wire [2:0]  r2    = b_load ? q_ld[4:2] : r_rn[2:0];
     wire [13:0] y2    = b_load ? {12'd0, q_ld[1:0]} : {yv[11:0], b1, b0};
-    wire        y0_keep = ~b_load & (ROOT_SPEC == 0);   // a running step's b0 is ~rem[15]
+    // y[0]: form 0 writes it at the load alone (a running step's b0 is read as ~rem[15]), so
+    // its next state is the load's bit and never depends on the running steps' sums
+    wire        y0_keep = ~b_load & (ROOT_SPEC == 0);
+    wire        y0_nx   = (ROOT_SPEC == 0) ? q_ld[0] : y2[0];
     wire        st_q  = b_load ? st_l : sticky;
     // SOFT_MODE: four bits shifted into y[11:0]
     wire [11:0] y_p   = b_load ? {8'd0, src_l[27:24]} : {y[7:0], sr[27:24]};
@@ -408,7 +411,7 @@ module tmc429_vtarget #(
                     rem[2:0] <= r2;
                     y[13:1] <= y2[13:1];
                     if (~y0_keep)
-                        y[0] <= y2[0];
+                        y[0] <= y0_nx;
                     sticky <= st_q;
                 end
             end
