@@ -64,7 +64,11 @@ module tmc429_motor_regs #(
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
     reg [12:0] tol_m1;         // dx_ref_tolerance - 1 (-1 for 0): the tolerance window's form
-    wire       lp, stop, tol_ok;
+    wire       lp;
+    /* verilator lint_off UNUSEDSIGNAL */   // the unit's condition levels (its vector boundary):
+    wire       stop, tol_ok;                // the interrupt takes their registered copies
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire       c_stop, c_sel, c_tol;
     wire [23:0] x_latched;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [11:0] v_actual;     // formed once for all motors in the read path (tmc429_regfile)
@@ -84,23 +88,23 @@ module tmc429_motor_regs #(
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
         .v_hold(v_hold), .stop_soft(stop_soft),
-        .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .v_actual(v_actual));
+        .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .c_stop(c_stop), .c_sel(c_sel), .c_tol(c_tol),
+        .v_actual(v_actual));
 
     // ---- interrupt conditions (C63), from the old state of the edge before the slot ------
-    wire        sel_sw   = ref_conf[`TMC429_F_REF_RNL - `TMC429_F_DISABLE_STOP_L] ? sw_r : sw_l;   // REF_RnL
-    wire        x_ge_tol = ~tol_ok;                             // |x_actual| >= tolerance
-    wire [7:0]  cond = {
-        sw_r,                       // 7 STOP_RIGHT_HIGH
-        sw_l,                       // 6 STOP_LEFT_HIGH
-        ~sw_r,                      // 5 STOP_RIGHT_LOW
-        ~sw_l,                      // 4 STOP_LEFT_LOW
-        stop,                       // 3 STOP
-        (x_actual == 24'd0) & ~sel_sw,  // 2 REF_MISS
-        sel_sw & x_ge_tol,          // 1 REF_WRONG
-        xeqt                        // 0 POS_END
+    // registered in every edge: the slot applies the conditions of the edge before it (C52).
+    // The switch stop, the selected switch (REF_RnL) and |x_actual| < tolerance are registered
+    // beside the stop actions in tmc429_ramp (c_stop, c_sel, c_tol); here the switch levels,
+    // x_actual = 0 and xEQt
+    reg  [3:0] cq_sw;
+    reg        cq_x0, cq_xeqt;
+    wire [7:0] cond_q = {
+        cq_sw,                      // 7..4 STOP_RIGHT_HIGH, STOP_LEFT_HIGH, _RIGHT_LOW, _LEFT_LOW
+        c_stop,                     // 3 STOP
+        cq_x0 & ~c_sel,             // 2 REF_MISS
+        c_sel & ~c_tol,             // 1 REF_WRONG: the selected switch, |x_actual| >= tolerance
+        cq_xeqt                     // 0 POS_END
     };
-    // registered in every edge: the slot applies the conditions of the edge before it (C52)
-    reg  [7:0] cond_q;
     wire       slot   = run & cond_tick;
     wire [7:0] events = slot ? (cond_q & ~int_hist) : 8'd0;
 
@@ -122,11 +126,13 @@ module tmc429_motor_regs #(
             ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
             int_hist <= COND_RESET;     // the conditions of the reset state: no event at power-on
-            cond_q <= COND_RESET;
+            cq_sw <= COND_RESET[7:4];  cq_x0 <= COND_RESET[2];  cq_xeqt <= COND_RESET[0];
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
             tol_m1 <= 13'h1FFF;         // dx_ref_tolerance 0
         end else begin
-            cond_q <= cond;
+            cq_sw   <= {sw_r, sw_l, ~sw_r, ~sw_l};
+            cq_x0   <= x_actual == 24'd0;
+            cq_xeqt <= xeqt;
             if (slot)
                 int_hist <= cond_q;
             int_mask  <= mask_nx;

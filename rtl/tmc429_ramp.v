@@ -76,13 +76,19 @@ module tmc429_ramp #(
     output wire        xeqt,       // x_actual == x_target
     output wire        stop,       // switch stop condition (STOP interrupt, C63)
     output wire        tol_ok,     // |x_actual| < dx_ref_tolerance
+    // the same conditions of the edge before (registered in every edge): the switch stop, the
+    // selected switch (REF_RnL) and the tolerance window, which the motor's condition slot
+    // applies (C52, C63)
+    output reg         c_stop,
+    output reg         c_sel,
+    output reg         c_tol,
     output wire [11:0] v_actual    // readout sign(V) * (|V| >> 8) (C42)
 );
     reg ref_prev;
     reg stop_hard;                   // registered hard stop action (C52, C61)
     // the conditions of the edge before, which the condition slot applies (C52): the stop
-    // actions, the selected switch and the latch
-    reg c_hard, c_soft, c_sel, c_latch;
+    // actions and the latch (and the outputs c_stop, c_sel, c_tol)
+    reg c_hard, c_soft, c_latch;
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -179,10 +185,13 @@ module tmc429_ramp #(
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
             stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
             c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
+            c_stop <= 1'b0;     c_tol <= 1'b0;
         end else begin
             c_hard  <= at_stop | (stop & ~soft_sw);
             c_soft  <= stop & soft_sw;
             c_sel   <= sel;
+            c_stop  <= stop;
+            c_tol   <= tol_ok;
             c_latch <= lp & va_nz & (sel != ref_prev);
             if (run) begin
                 if (cond_tick) begin
