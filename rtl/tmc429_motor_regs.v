@@ -94,12 +94,11 @@ module tmc429_motor_regs #(
     // ---- interrupt conditions (C63), from the old state of the edge before the slot ------
     // registered in every edge: the slot applies the conditions of the edge before it (C52).
     // The switch stop, the selected switch (REF_RnL) and |x_actual| < tolerance are registered
-    // beside the stop actions in tmc429_ramp (c_stop, c_sel, c_tol); here the switch levels,
-    // x_actual = 0 and xEQt
-    reg  [3:0] cq_sw;
-    reg        cq_x0, cq_xeqt;
+    // beside the stop actions in tmc429_ramp (c_stop, c_sel, c_tol); here the two switch
+    // levels (each HIGH condition and its LOW complement), x_actual = 0 and xEQt
+    reg        cq_r, cq_l, cq_x0, cq_xeqt;
     wire [7:0] cond_q = {
-        cq_sw,                      // 7..4 STOP_RIGHT_HIGH, STOP_LEFT_HIGH, _RIGHT_LOW, _LEFT_LOW
+        cq_r, cq_l, ~cq_r, ~cq_l,   // 7..4 STOP_RIGHT_HIGH, STOP_LEFT_HIGH, _RIGHT_LOW, _LEFT_LOW
         c_stop,                     // 3 STOP
         cq_x0 & ~c_sel,             // 2 REF_MISS
         c_sel & ~c_tol,             // 1 REF_WRONG: the selected switch, |x_actual| >= tolerance
@@ -126,11 +125,13 @@ module tmc429_motor_regs #(
             ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
             int_hist <= COND_RESET;     // the conditions of the reset state: no event at power-on
-            cq_sw <= COND_RESET[7:4];  cq_x0 <= COND_RESET[2];  cq_xeqt <= COND_RESET[0];
+            cq_r <= COND_RESET[7];  cq_l <= COND_RESET[6];    // the LOW bits 5, 4 their complements
+            cq_x0 <= COND_RESET[2];  cq_xeqt <= COND_RESET[0];
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
             tol_m1 <= 13'h1FFF;         // dx_ref_tolerance 0
         end else begin
-            cq_sw   <= {sw_r, sw_l, ~sw_r, ~sw_l};
+            cq_r    <= sw_r;
+            cq_l    <= sw_l;
             cq_x0   <= x_actual == 24'd0;
             cq_xeqt <= xeqt;
             if (slot)
