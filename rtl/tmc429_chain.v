@@ -175,7 +175,11 @@ module tmc429_chain (
     // The ramp ticks and cont_update come as the values of the next edge and are registered
     // here (ramp_tick, cont_update: equal to the register file's), so that the wrap of a
     // continuous-update counter is a flip-flop formed one edge ahead and `request`, an OR of
-    // flip-flops, is one LUT level before `start`.
+    // flip-flops, is one LUT level before `start`. A motor's ramp ticks are a frame apart (one
+    // ramp phase per frame, C40), so in an edge before a tick the motor has no tick and its
+    // counter keeps its value: the wrap's next state takes the counter's registered compare
+    // (cupd_top = counter at 1023), not the compare of the next count, and the ticks' next
+    // state meets one AND-OR before the flip-flop.
     reg  [2:0] ramp_tick;
     reg        cont_update;
     wire [2:0] cu_tick = ramp_tick & {3{cont_update}};
@@ -299,7 +303,7 @@ module tmc429_chain (
             cupd_top <= cupd_top_n;
             ramp_tick <= ramp_tick_nx;
             cont_update <= cont_update_nx;
-            wrap <= |(ramp_tick_nx & {3{cont_update_nx}} & cupd_top_n);
+            wrap <= |(ramp_tick_nx & {3{cont_update_nx}} & cupd_top);
         end
     end
 
