@@ -49,6 +49,7 @@ module tmc429_motor_regs #(
     // motion state (probes)
     output wire [23:0] x_actual,
     output wire [19:0] v,
+    output wire        v_rnd,     // v_actual = V[19:8] + v_rnd (tmc429_ramp), for the read path
     output wire [11:0] v_target,
     output wire [11:0] a_actual,
     output wire [7:0]  ustep,
@@ -89,7 +90,7 @@ module tmc429_motor_regs #(
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
         .v_hold(v_hold), .stop_soft(stop_soft),
         .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .c_stop(c_stop), .c_sel(c_sel), .c_tol(c_tol),
-        .v_actual(v_actual));
+        .v_actual(v_actual), .v_rnd(v_rnd));
 
     // ---- interrupt conditions (C63), from the old state of the edge before the slot ------
     // registered in every edge: the slot applies the conditions of the edge before it (C52).

@@ -82,7 +82,10 @@ module tmc429_ramp #(
     output reg         c_stop,
     output reg         c_sel,
     output reg         c_tol,
-    output wire [11:0] v_actual    // readout sign(V) * (|V| >> 8) (C42)
+    output wire [11:0] v_actual,   // readout sign(V) * (|V| >> 8) (C42)
+    // V >> 8 rounds up toward 0: V < 0 with a nonzero low byte (v_actual = V[19:8] + v_rnd),
+    // one LUT of two flip-flops, for the read path's single incrementer (tmc429_regfile)
+    output wire        v_rnd
 );
     reg ref_prev;
     reg stop_hard;                   // registered hard stop action (C52, C61)
@@ -99,7 +102,8 @@ module tmc429_ramp #(
     wire [10:0] v_mx   = v[18:8] ^ {11{v_neg}};
     reg         v_mc;            // = v_neg & (V[7:0] == 0), formed with V's next state
     // sign(V) * (|V| >> 8): V >> 8 rounded toward 0
-    assign v_actual = v[19:8] + {11'd0, v_neg & ~v_mc};
+    assign v_rnd    = v_neg & ~v_mc;
+    assign v_actual = v[19:8] + {11'd0, v_rnd};
     // V_ACTUAL != 0 without the adder: |V| >> 8 = v_mx + v_mc is 0 only when both are 0
     wire        va_nz  = (|v_mx) | v_mc;
 

@@ -217,6 +217,7 @@ module tmc429_regfile #(
     wire [32:0] m_a_max;
     wire [59:0] m_v_hold;
     wire [2:0]  m_stop_soft, ph_ramp_ld, am_we;
+    wire [2:0]  m_v_rnd;      // v_actual = V[19:8] + v_rnd of motor m
     wire [19:0] v_rmp;
     wire [11:0] a_rmp;
     wire        mc_rmp;
@@ -280,7 +281,7 @@ module tmc429_regfile #(
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
                 .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
                 .brake_h(m_brake_h[5*g+4:5*g]),
-                .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]),
+                .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]), .v_rnd(m_v_rnd[g]),
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
                 .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
                 .step(p_step[g]), .dir(p_dir[g]),
@@ -532,12 +533,13 @@ module tmc429_regfile #(
                         | ({24{rq_mot[1]}} & m_rdata[47:24])
                         | ({24{rq_mot[2]}} & m_rdata[71:48])
                         | ({24{rq_glb}} & st_glb);
-    // v_actual (V >> 8 rounded toward 0, C42): V of the selected motor, one
-    // incrementer for the three motors on this path only
-    wire [19:0] v_sel  = ({20{rq_mot[0]}} & p_v[19:0]) | ({20{rq_mot[1]}} & p_v[39:20])
-                       | ({20{rq_mot[2]}} & p_v[59:40]);
-    wire [11:0] v_inc  = v_sel[19:8] + 12'd1;     // the rounding selects after the increment
-    wire [11:0] v_rd   = (v_sel[19] & (v_sel[7:0] != 8'd0)) ? v_inc : v_sel[19:8];
+    // v_actual (V >> 8 rounded toward 0, C42): V[19:8] of the selected motor plus its rounding
+    // bit (a LUT of flip-flops in tmc429_ramp) as the carry in, one incrementer for the three
+    // motors on this path only
+    wire [11:0] v_sel  = ({12{rq_mot[0]}} & p_v[19:8]) | ({12{rq_mot[1]}} & p_v[39:28])
+                       | ({12{rq_mot[2]}} & p_v[59:48]);
+    wire        v_up   = |(rq_mot & m_v_rnd);
+    wire [11:0] v_rd   = v_sel + {11'd0, v_up};
     wire [23:0] st_va  = st_data | {12'd0, {12{rq_va}} & v_rd};
     // rd_data is 0 outside the edge that loads it (rd_load): the value matters in that edge
     // alone, and a simulator then evaluates the multiplexer only when a read takes it (the
