@@ -58,8 +58,13 @@ module tmc429_spi_slave (
     reg [31:0] out_sr;
     reg [5:0]  cnt;
     reg        exec_q;
+    reg        fall_q;
 
-    wire nscs_fall = ~nscs_q & nscs_h;
+    // the falling edge ~nscs_q & nscs_h, formed one edge ahead into a register (after an edge
+    // nscs_h is the nscs_q before it and nscs_q the first stage's level): the frame start, which
+    // wakes the core from power down (C66) and so enters the frame schedule's next state,
+    // starts at a flip-flop that the placement puts beside its users, not at the synchronizer
+    wire nscs_fall = fall_q;
     wire sel       = ~nscs_q & ~nscs_h;   // low, and not the cycle of the falling edge (C13)
     wire sck_rise  = sel & sck_q & ~sck_h;
     // the first falling edge presents bit 31, which is already out (SPI mode 3)
@@ -89,9 +94,11 @@ module tmc429_spi_slave (
         if (rst) begin
             cnt    <= 6'd0;
             exec_q <= 1'b0;
+            fall_q <= 1'b0;
         end else begin
             cnt    <= cnt_nx;
             exec_q <= exec_nx;
+            fall_q <= ~nscs_s & nscs_q;
         end
     end
 
