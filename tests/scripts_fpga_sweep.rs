@@ -1,8 +1,9 @@
-//! The place-and-route sweeps of `scripts/fpga` and `scripts/rtl-report` bound each nextpnr run
-//! (`--pnr-timeout`, docs/fpga.md, docs/rtl.md): nextpnr's router does not give up on a
-//! placement it cannot route, so a run past its time is stopped, its seed's entry says so, and no
-//! bitstream is left behind. Each test synthesizes the TMC4210 (Yosys, about 20 s) and gives
-//! nextpnr one second, far less than its placement takes.
+//! The place-and-route sweeps of `scripts/fpga` and `scripts/rtl-report` (docs/fpga.md,
+//! docs/rtl.md). They bound each nextpnr run (`--pnr-timeout`): nextpnr's router does not give up
+//! on a placement it cannot route, so a run past its time is stopped, its seed's entry says so,
+//! and no bitstream is left behind; those tests synthesize the TMC4210 (Yosys, about 20 s) and
+//! give nextpnr one second, far less than its placement takes. `scripts/fpga --until-met` places
+//! the seeds in order and stops at the first placement that meets the CLK.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -57,4 +58,34 @@ fn a_timeout_that_is_not_a_number_of_seconds_is_refused() {
             assert!(err.contains(&format!("{name}: --pnr-timeout takes a number of seconds above 0, not '{bad}'")), "{name}: {err}");
         }
     }
+}
+
+/// The seeds' entries of a result line: "... 32 1: 30.12, 2: 36.16 (best ..." gives
+/// [(1, 30.12), (2, 36.16)].
+fn seed_entries(line: &str) -> Vec<(u32, f64)> {
+    let list = line.split(" (best").next().unwrap();
+    list.split(',')
+        .filter_map(|e| {
+            let (seed, mhz) = e.trim().rsplit_once(' ').map(|(a, b)| (a.rsplit(' ').next().unwrap(), b))?;
+            Some((seed.trim_end_matches(':').parse().ok()?, mhz.parse().ok()?))
+        })
+        .collect()
+}
+
+#[test]
+fn fpga_until_met_stops_at_the_first_placement_that_meets_the_clk() {
+    let out = scratch("fpga-until-met");
+    let o = script("fpga", &["--chip", "tmc4210", "--seeds", "1 2 3", "--until-met", "--out", out.to_str().unwrap()]);
+    let stdout = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "stdout:\n{stdout}\nstderr:\n{}", text(&o.stderr));
+    let line = stdout.lines().find(|l| l.contains(" tmc4210 ")).expect("the TMC4210's line");
+    let placed = seed_entries(line);
+    // the TMC4210's CLK is 32 MHz: every seed placed before the last misses it, the last meets it
+    let (last, mhz) = *placed.last().expect("a seed placed");
+    assert!(mhz >= 32.0, "{line}");
+    assert!(placed[..placed.len() - 1].iter().all(|&(_, m)| m < 32.0), "{line}");
+    assert_eq!(placed.iter().map(|&(s, _)| s).collect::<Vec<_>>(), (1..=last).collect::<Vec<_>>(), "{line}");
+    assert!(line.contains(&format!("seed {last}: meets 32 MHz")), "{line}");
+    assert!(out.join("icebreaker-tmc4210.bin").exists(), "the bitstream of the placement that meets");
+    std::fs::remove_dir_all(&out).ok();
 }
