@@ -66,7 +66,8 @@ fn seed_entries(line: &str) -> Vec<(u32, f64)> {
     let list = line.split(" (best").next().unwrap();
     list.split(',')
         .filter_map(|e| {
-            let (seed, mhz) = e.trim().rsplit_once(' ').map(|(a, b)| (a.rsplit(' ').next().unwrap(), b))?;
+            let mut words = e.split_whitespace().rev();
+            let (mhz, seed) = (words.next()?, words.next()?);
             Some((seed.trim_end_matches(':').parse().ok()?, mhz.parse().ok()?))
         })
         .collect()
