@@ -84,13 +84,22 @@ module tmc429_accel #(
     wire        up    = s_vt[20];
     wire        land  = ~s_lo[20] & ~s_hi[20];
     wire [11:0] d_lo  = {t_hi[3:0], 8'd0} - vs[11:0];                   // T - V, bits 11..0
-    wire [11:0] a_neg = 12'd0 - {1'b0, as};
+    // -a_max without a carry chain (so that no adder is chained behind it): bit i is bit i of
+    // a_max inverted when a lower bit is 1 (two's complement: the bits above the lowest 1 flip)
+    reg  [11:0] a_neg;
+    integer i;
+    always @(*) begin
+        a_neg[0] = as[0];
+        for (i = 1; i < 11; i = i + 1)
+            a_neg[i] = as[i] ^ (|(as & ((11'd1 << i) - 11'd1)));
+        a_neg[11] = |as;
+    end
     assign v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
     // the change of V: d when landing, else the step
     assign a_rmp = land ? d_lo : (up ? {1'b0, as} : a_neg);
     // v_mc of the new V: V + a_max (V - a_max) has low byte 0 iff V's low byte is -a_max
     // (a_max) mod 256; landed on T = 256 vt, it is T's sign
-    wire        mc_up = v_up[19] & (vs[7:0] == (8'd0 - as[7:0]));
+    wire        mc_up = v_up[19] & (vs[7:0] == a_neg[7:0]);
     wire        mc_dn = v_dn[19] & (vs[7:0] == as[7:0]);
     assign mc_rmp = land ? t_hi[11] : (up ? mc_up : mc_dn);
 endmodule
