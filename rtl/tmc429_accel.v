@@ -97,10 +97,10 @@ module tmc429_accel #(
     assign v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
     // the change of V: d when landing, else the step
     assign a_rmp = land ? d_lo : (up ? {1'b0, as} : a_neg);
-    // v_mc of the new V: V + a_max (V - a_max) has low byte 0 iff V's low byte is -a_max
-    // (a_max) mod 256; landed on T = 256 vt, it is T's sign
-    wire        mc_up = v_up[19] & (vs[7:0] == a_neg[7:0]);
-    wire        mc_dn = v_dn[19] & (vs[7:0] == as[7:0]);
+    // v_mc of the new V (negative with low byte 0): from the sums' low bytes, which leave
+    // their carry chains before the signs; landed on T = 256 vt, it is T's sign
+    wire        mc_up = v_up[19] & (v_up[7:0] == 8'd0);
+    wire        mc_dn = v_dn[19] & (v_dn[7:0] == 8'd0);
     assign mc_rmp = land ? t_hi[11] : (up ? mc_up : mc_dn);
 endmodule
 
