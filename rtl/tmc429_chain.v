@@ -135,10 +135,16 @@ module tmc429_chain (
     // can_start = (state == IDLE) | (CSOFF with cnt <= 1): a datagram may start in this edge.
     // A register formed with the next state (HOLD enters CSOFF with cnt = P >= 16), so that
     // `start` is request AND a flip-flop.
+    // The counter's comparisons with constants are bit tests (cnt > 1: a bit above bit 0 set;
+    // cnt <= 2: none above bit 1 and not 3), LUTs only: written as `>` and `<=`, synthesis
+    // (Yosys' synth_ice40) builds each as a carry chain, which lay on the path from the
+    // counter through the chip select's next state into the nSCS_S pin register.
+    wire       cnt_gt1 = |cnt[9:1];
+    wire       cnt_le2 = ~|cnt[9:2] & ~&cnt[1:0];
     reg        can_start;
     wire       can_start_n = ~run ? can_start
                            : (~spi_mode | (~start & ((state == IDLE)
-                                                     | ((state[2:1] == 2'b11) & (cnt <= 10'd2)))));
+                                                     | ((state[2:1] == 2'b11) & cnt_le2))));
     reg [47:0] readback_n;
 
     // ---- RAM reads ahead of a bit (C80) ------------------------------------------------------
@@ -214,7 +220,7 @@ module tmc429_chain (
                 start = can_start & request;
                 if (state == IDLE) begin
                     // waiting for a request (start)
-                end else if (cnt > 10'd1) begin
+                end else if (cnt_gt1) begin
                     cnt_n = cnt - 10'd1;
                 end else begin
                     case (state)

@@ -46,7 +46,7 @@ module tmc429_current (
             end else begin
                 if (v0_count != 8'd255)
                     v0_count <= v0_count + 8'd1;
-                if (v0_count >= 8'd254)          // the count reaches 255 now (or is there)
+                if (&v0_count[7:1])              // >= 254: the count reaches 255 now (or is there)
                     sel <= (|is_agtat & |is_aleat) ? SEL_V0 : SEL_ALEAT;
             end
         end

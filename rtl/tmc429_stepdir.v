@@ -82,8 +82,11 @@ module tmc429_stepdir (
         end
     endfunction
 
+    // cnt > 2 as a bit test (a bit above bit 1 set, or 3): LUTs, where `>` with a constant
+    // is a carry chain in synthesis (Yosys' synth_ice40)
+    wire        cnt_gt2 = (|cnt[8:2]) | (&cnt[1:0]);
     wire        hold_n = ~run ? hold
-                       : (~en ? 1'b0 : (hold ? (cnt > 9'd2) : (pend | bl_nz)));
+                       : (~en ? 1'b0 : (hold ? cnt_gt2 : (pend | bl_nz)));
 
     always @(*) begin
         state_n   = state;
