@@ -446,29 +446,20 @@ module tmc429_vtarget #(
     /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits and the sign's copy
     wire [14:0] q_h    = ({1'b0, q} ^ {15{b_neg}}) + b_hk;
     /* verilator lint_on UNUSEDSIGNAL */
-    // in the edge before the commit (c_pre) the comparisons are registered beside the signed
-    // (q - h) >> 2 and both bounds (the next motor's load replaces the B registers in that
-    // edge), so that each comparison's carry chain ends at a flip-flop; the commit selects:
+    // in the edge before the commit (c_pre) the comparisons are registered: the result is
     // (q - h) >> 2 when q lies between the bounds, else the bound (lo when below and
     // lo <= v_max, else v_max; two's complement), 0 with no target velocity
-    reg  [11:0] c_q, c_vmin, c_vmax;
-    reg         c_below, c_above, c_none, c_lo_gt;
+    reg  [11:0] c_q, c_bnd;
+    reg         c_use;
     always @(posedge clk) begin
         if (rst) begin
-            c_q <= 12'd0;  c_vmin <= 12'd0;  c_vmax <= 12'd0;
-            c_below <= 1'b0;  c_above <= 1'b0;  c_none <= 1'b1;  c_lo_gt <= 1'b0;
+            c_q <= 12'd0;  c_bnd <= 12'd0;  c_use <= 1'b0;
         end else if (run & c_pre) begin
-            c_q     <= q_h[13:2];
-            c_vmin  <= b_vmin;
-            c_vmax  <= b_vmax;
-            c_below <= below;
-            c_above <= above;
-            c_none  <= b_none;
-            c_lo_gt <= b_lo_gt;
+            c_q   <= q_h[13:2];
+            c_bnd <= b_none ? 12'd0 : ((below & ~b_lo_gt) ? b_vmin : b_vmax);
+            c_use <= ~b_none & ~below & ~above;
         end
     end
-    wire [11:0] c_bnd  = c_none ? 12'd0 : ((c_below & ~c_lo_gt) ? c_vmin : c_vmax);
-    wire        c_use  = ~c_none & ~c_below & ~c_above;
     wire [11:0] res    = c_use ? c_q : c_bnd;
 
     reg [35:0] vt_r;
