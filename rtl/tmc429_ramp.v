@@ -108,16 +108,18 @@ module tmc429_ramp #(
     wire        va_nz  = (|v_mx) | v_mc;
 
     // ---- tolerance window, switch stop (C61) ----------------------------------------------
-    wire        x_hi0 = x_actual[23:12] == 12'h000;
-    wire        x_hi1 = x_actual[23:12] == 12'hFFF;
-    // with t = dx_ref_tolerance - 1 (a register, so that each test is one carry chain from
-    // flip-flops): x >= 0: x_lo < tol, i.e. x_lo - t - 1 < 0 (x_lo + ~t); x < 0: |x| =
-    // ~x_lo + 1 < tol, i.e. ~x_lo - t < 0
-    /* verilator lint_off UNUSEDSIGNAL */     // only the signs of the differences are used
-    wire [12:0] x_dif = {1'b0, x_actual[11:0]} + ~tol_m1;
-    wire [13:0] x_kd  = {2'b00, ~x_actual[11:0]} - {tol_m1[12], tol_m1};
+    // |x_actual| < tolerance needs x_actual[23:12] all 0 (x >= 0) or all 1 (x < 0), a tolerance
+    // above 0 and the low bits below it. With t = dx_ref_tolerance - 1 (a register, t >= 0) and
+    // n = x_actual[23]: x >= 0: x_lo < tol, i.e. x_lo + ~t has no carry out of 12 bits; x < 0:
+    // |x| = ~x_lo + 1 < tol, i.e. ~x_lo + ~t + 1 has none. One carry chain, (x_lo ^ n) + ~t + n,
+    // whose carry out enters the conditions below last: one AND with x_hi, no second chain
+    wire        x_neg = x_actual[23];
+    wire        x_hi = (x_actual[22:12] == {11{x_neg}}) & ~tol_m1[12];
+    /* verilator lint_off UNUSEDSIGNAL */     // only the carry out is used
+    wire [12:0] x_win = {1'b0, x_actual[11:0] ^ {12{x_neg}}} + {1'b0, ~tol_m1[11:0]}
+                      + {12'd0, x_neg};
     /* verilator lint_on UNUSEDSIGNAL */
-    assign tol_ok = (x_hi0 & x_dif[12]) | (x_hi1 & x_kd[13]);
+    assign tol_ok = x_hi & ~x_win[12];
 
     // ref_conf is bits REF_RnL..DISABLE_STOP_L of ref_conf_rm
     localparam RC_L = 0;
@@ -129,9 +131,14 @@ module tmc429_ramp #(
     wire vt_zero  = vt == 12'd0;
     wire mov_neg  = v_neg | (v_zero & vt[11]);
     wire mov_pos  = (~v_neg & ~v_zero) | (v_zero & ~vt[11] & ~vt_zero);
-    wire stop_l   = ~ref_conf[RC_L] & sw_l & mov_neg & ~tol_ok;
-    wire stop_r   = ~ref_conf[RC_R] & sw_r & mov_pos & ~tol_ok;
-    assign stop   = stop_l | stop_r;
+    // a switch stop but for the tolerance window: pre_stop; with SOFT_STOP: pre_soft, without:
+    // pre_hard (the window's carry out enters each condition last)
+    wire pre_l    = ~ref_conf[RC_L] & sw_l & mov_neg;
+    wire pre_r    = ~ref_conf[RC_R] & sw_r & mov_pos;
+    wire pre_stop = pre_l | pre_r;
+    wire pre_soft = pre_stop & soft_sw;
+    wire pre_hard = pre_stop & ~soft_sw;
+    assign stop   = pre_stop & ~tol_ok;
     wire sel      = rnl ? sw_r : sw_l;
 
     // ---- stop at target (C52) ------------------------------------------------------------------
@@ -191,8 +198,8 @@ module tmc429_ramp #(
             c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
             c_stop <= 1'b0;     c_tol <= 1'b0;
         end else begin
-            c_hard  <= at_stop | (stop & ~soft_sw);
-            c_soft  <= stop & soft_sw;
+            c_hard  <= at_stop | (pre_hard & ~tol_ok);
+            c_soft  <= pre_soft & ~tol_ok;
             c_sel   <= sel;
             c_stop  <= stop;
             c_tol   <= tol_ok;

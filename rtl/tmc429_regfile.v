@@ -540,18 +540,17 @@ module tmc429_regfile #(
                        | ({12{rq_mot[2]}} & p_v[59:48]);
     wire        v_up   = |(rq_mot & m_v_rnd);
     wire [11:0] v_rd   = v_sel + {11'd0, v_up};
-    wire [23:0] st_va  = st_data | {12'd0, {12{rq_va}} & v_rd};
     // rd_data is 0 outside the edge that loads it (rd_load): the value matters in that edge
     // alone, and a simulator then evaluates the multiplexer only when a read takes it (the
-    // SPI slave's load already selects on rd_load, so synthesis forms the same logic)
+    // SPI slave's load already selects on rd_load, so synthesis forms the same logic). The
+    // incrementer's sum enters last: the rest of the read value (rd_early) is formed beside it
+    wire        rd_va = rd_load & ~rq_ram & rq_va;
+    wire [23:0] rd_early = ~rd_load ? 24'd0
+                         : rq_ram ? (({18'd0, ram_rdata[11:6]} << `TMC429_F_RAM_ODD_LSB)
+                                    | ({18'd0, ram_rdata[5:0]} << `TMC429_F_RAM_EVEN_LSB))
+                         : (st_data | sh_data);
     always @(*) begin
-        if (!rd_load)
-            rd_data = 24'd0;
-        else if (rq_ram)
-            rd_data = ({18'd0, ram_rdata[11:6]} << `TMC429_F_RAM_ODD_LSB)
-                    | ({18'd0, ram_rdata[5:0]} << `TMC429_F_RAM_EVEN_LSB);
-        else
-            rd_data = st_va | sh_data;
+        rd_data = rd_early | {12'd0, {12{rd_va}} & v_rd};
     end
 endmodule
 

@@ -11,7 +11,8 @@
 //   p = 7m+2..+5  acc = (c << u) * p_mul (8-bit multiplier word, Horner, 2 bits per cycle)
 //   p = 7m+6..+12 B: RAMP_MODE: square root of Y = (acc << 11) >> pdiv (the radicand of C50),
 //                 two result bits per cycle (14 bits); SOFT_MODE: (c * p_mul) >> (3+pdiv),
-//                 four bits per cycle shifted out of acc
+//                 four bits per cycle shifted out of acc, aligned and saturated at 7m+12;
+//                 VELOCITY_MODE: |v_target| loaded. y then holds q = 4·v + h in every mode
 //   p = 7m+13     C: RAMP_MODE: v = (q - h) >> 2 with q the root and h = ⌈a_max/128⌉ when
 //                 ramp_div >= pulse_div (the velocity held between ramp ticks, C50), the
 //                 comparisons for the clamp to [v_min, v_max] (VELOCITY_MODE: |v_target| to
@@ -238,14 +239,16 @@ module tmc429_vtarget #(
     end
 
     // ---- B: square root / shift ------------------------------------------------------------
-    reg [1:0]  b_rm;
-    reg        b_soft;            // b_rm == SOFT_MODE
-    reg [11:0] b_vmin, b_vmax;    // the signed results lo and v_max (sign applied at the load)
+    reg        b_soft;            // SOFT_MODE
+    reg [11:0] b_vmin;            // the signed result lo (sign applied at the load)
     reg [13:0] b_lo4, b_hi4;      // 4·lo + h and 4·(v_max + 1) + h (C: the clamp on 4·v + h)
     reg [14:0] b_hk;              // -h, or h + 4 when negative: the signed (q - h) >> 2 is q ^ neg + hk
-    reg        b_neg, b_none;     // sign of the result; no target velocity (result 0)
-    reg        b_lo_gt;           // lo > v_max
-    reg [11:0] b_vabs;            // |v_target| (VELOCITY_MODE), formed at the load
+    reg        b_neg;             // sign of the result
+    // the clamp's selections without the comparisons, formed at the load: b_use, q may be used
+    // (a target velocity, and no saturated root); b_sel, the bound lo is taken when q is below
+    // it (also lo <= v_max); b_vmaxz, the bound taken otherwise (0 with no target velocity)
+    reg        b_use, b_sel;
+    reg [11:0] b_vmaxz;
     reg        b_odd;
     reg [2:0]  b_ne;
     reg [27:0] sr;
@@ -264,7 +267,7 @@ module tmc429_vtarget #(
             l_odd <= 1'b0; l_ne <= 3'd0; l_t <= 3'd0;
         end else if (run & a_c) begin
             l_odd  <= a_soft & a_pdiv[1] & a_pdiv[0];
-            l_ne   <= a_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : 3'd7;
+            l_ne   <= a_soft ? (3'd6 - {1'b0, a_pdiv[3:2]}) : (a_rm[1] ? 3'd0 : 3'd7);
             l_t    <= a_pdiv[3:1];
         end
     end
@@ -382,24 +385,36 @@ module tmc429_vtarget #(
     wire [4:0]  l_h    = (a_rm == 2'd0) ? a_h : 5'd0;
     wire        l_neg  = l_vel ? a_vtg[11] : a_sgn;
 
+    // RAMP_MODE's root saturates from the load on (the running steps keep sticky), so that
+    // the clamp's selections are known there
+    wire        l_none = (a_rm == 2'd3) | (~a_rm[1] & a_zero);
+    wire        l_qsat = (a_rm == 2'd0) & st_l;
+    wire [11:0] l_vmax = l_neg ? 12'd0 - {1'b0, a_vmax} : {1'b0, a_vmax};
+    // VELOCITY_MODE: q = 4·|v_target| is loaded into y and kept (no steps); -2048 -> 2048
+    wire [11:0] l_vabs = a_vtg[11] ? (~a_vtg + 12'd1) : a_vtg;
+    // SOFT_MODE: in the cycle after the last shift (k = 6: at most six shifts) y becomes
+    // q = 4·mag, the quotient's twelve bits aligned by "odd", saturated by sticky
+    wire        s_norm = ~step & b_soft & (b_k == 3'd6);
+    wire        y_sat  = sticky | (~b_odd & y[11]);
+    wire [10:0] y_mag  = b_odd ? y[11:1] : y[10:0];
+
     always @(posedge clk) begin
         if (rst) begin
-            b_rm <= 2'd0; b_soft <= 1'b0; b_vmin <= 12'd0; b_vmax <= 12'd0; b_vabs <= 12'd0;
-            b_lo4 <= 14'd0; b_hi4 <= 14'd4; b_hk <= 15'd0; b_lo_gt <= 1'b0;
-            b_neg <= 1'b0; b_none <= 1'b1; b_odd <= 1'b0; b_ne <= 3'd0;
+            b_soft <= 1'b0; b_vmin <= 12'd0; b_vmaxz <= 12'd0; b_use <= 1'b0; b_sel <= 1'b0;
+            b_lo4 <= 14'd0; b_hi4 <= 14'd4; b_hk <= 15'd0;
+            b_neg <= 1'b0; b_odd <= 1'b0; b_ne <= 3'd0;
             sr <= 28'd0; rem[2:0] <= 3'd0; y <= 14'd0; sticky <= 1'b0;
         end else if (run) begin
             if (b_load) begin
-                b_rm <= a_rm; b_soft <= a_soft;
+                b_soft <= a_soft;
                 b_vmin <= l_neg ? 12'd0 - {1'b0, l_lo} : {1'b0, l_lo};
-                b_vmax <= l_neg ? 12'd0 - {1'b0, a_vmax} : {1'b0, a_vmax};
+                b_vmaxz <= l_none ? 12'd0 : l_vmax;
+                b_use <= ~l_none & ~l_qsat;
+                b_sel <= ~l_none & ~l_qsat & (l_lo <= a_vmax);
                 b_lo4 <= {1'b0, l_lo, 2'b00} + {9'd0, l_h};
                 b_hi4 <= {1'b0, a_vmax, 2'b00} + {9'd0, l_h} + 14'd4;
                 b_hk <= l_neg ? {10'd0, l_h} + 15'd4 : 15'd0 - {10'd0, l_h};
-                b_lo_gt <= l_lo > a_vmax;
-                b_vabs <= a_vtg[11] ? (~a_vtg + 12'd1) : a_vtg;  // -2048 -> 2048 (>= v_max)
                 b_neg <= l_neg;
-                b_none <= (a_rm == 2'd3) | (~a_rm[1] & a_zero);
                 b_odd <= l_odd; b_ne <= l_ne;
             end
             if (b_run & step) begin
@@ -409,12 +424,17 @@ module tmc429_vtarget #(
                     sticky <= st_p;
                 end else begin
                     rem[2:0] <= r2;
-                    y[13:1] <= y2[13:1];
+                    if (b_load & l_vel)
+                        y[13:1] <= {l_vabs, 1'b0};
+                    else
+                        y[13:1] <= y2[13:1];
                     if (~y0_keep)
-                        y[0] <= y0_nx;
+                        y[0] <= y0_nx & ~(b_load & l_vel);
                     sticky <= st_q;
                 end
             end
+            if (b_run & s_norm)
+                y <= {y_sat, y_mag, 2'b00};
         end
     end
 
@@ -434,15 +454,11 @@ module tmc429_vtarget #(
     // against the bounds formed at the load, the subtraction beside them (C50). The sign is
     // known at the load: the bounds are negated there, and (q - h) >> 2 is formed signed,
     // -((q - h) >> 2) = (h + 3 - q) >> 2 = (~q + h + 4) >> 2, so that no negation follows
-    wire        c_vel  = b_rm == 2'd2;
-    wire        c_ramp = b_rm == 2'd0;
-    wire        y_sat  = sticky | (~b_odd & yv[11]);
-    wire [10:0] y_mag  = b_odd ? yv[11:1] : yv[10:0];
-    wire [11:0] mag    = c_vel ? b_vabs : {y_sat, y_mag};
-    wire [13:0] q      = c_ramp ? yv : {mag, 2'b00};
-    wire        q_sat  = c_ramp & sticky;
-    wire        below  = ~q_sat & (q < b_lo4);
-    wire        above  = q_sat | (q >= b_hi4);
+    // q is y in every mode (SOFT_MODE and VELOCITY_MODE leave 4·mag there), so that each
+    // comparison is one carry chain from flip-flops followed by the selection alone
+    wire [13:0] q      = yv;
+    wire        below  = q < b_lo4;
+    wire        above  = q >= b_hi4;
     /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits and the sign's copy
     wire [14:0] q_h    = ({1'b0, q} ^ {15{b_neg}}) + b_hk;
     /* verilator lint_on UNUSEDSIGNAL */
@@ -456,8 +472,8 @@ module tmc429_vtarget #(
             c_q <= 12'd0;  c_bnd <= 12'd0;  c_use <= 1'b0;
         end else if (run & c_pre) begin
             c_q   <= q_h[13:2];
-            c_bnd <= b_none ? 12'd0 : ((below & ~b_lo_gt) ? b_vmin : b_vmax);
-            c_use <= ~b_none & ~below & ~above;
+            c_bnd <= (b_sel & below) ? b_vmin : b_vmaxz;
+            c_use <= b_use & ~below & ~above;
         end
     end
     wire [11:0] res    = c_use ? c_q : c_bnd;
