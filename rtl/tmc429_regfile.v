@@ -28,6 +28,7 @@ module tmc429_regfile #(
     input  wire [5:0]  rd_addr_q,     // the same address, stable one edge earlier (shadow RAM)
     input  wire        rd_load,       // the SPI slave loads rd_data in this edge
     output reg  [23:0] rd_data,
+    output wire        rd_round,      // rd_data's bits 11..0 are 1 more (v_actual's rounding, C42)
     input  wire [2:0]  ref_q,         // synchronized REF3..1
     input  wire [2:0]  refr_q,        // synchronized REFR3..1
     output wire [7:0]  status,        // INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1
@@ -533,24 +534,25 @@ module tmc429_regfile #(
                         | ({24{rq_mot[1]}} & m_rdata[47:24])
                         | ({24{rq_mot[2]}} & m_rdata[71:48])
                         | ({24{rq_glb}} & st_glb);
-    // v_actual (V >> 8 rounded toward 0, C42): V[19:8] of the selected motor plus its rounding
-    // bit (a LUT of flip-flops in tmc429_ramp) as the carry in, one incrementer for the three
-    // motors on this path only
+    // v_actual (V >> 8 rounded toward 0, C42): V[19:8] of the selected motor and its rounding
+    // bit (a LUT of flip-flops in tmc429_ramp), which the SPI slave adds in the next edge
     wire [11:0] v_sel  = ({12{rq_mot[0]}} & p_v[19:8]) | ({12{rq_mot[1]}} & p_v[39:28])
                        | ({12{rq_mot[2]}} & p_v[59:48]);
     wire        v_up   = |(rq_mot & m_v_rnd);
-    wire [11:0] v_rd   = v_sel + {11'd0, v_up};
     // rd_data is 0 outside the edge that loads it (rd_load): the value matters in that edge
     // alone, and a simulator then evaluates the multiplexer only when a read takes it (the
     // SPI slave's load already selects on rd_load, so synthesis forms the same logic). The
-    // incrementer's sum enters last: the rest of the read value (rd_early) is formed beside it
+    // rounding bit is added by the SPI slave in the edge after the load (rd_round)
     wire        rd_va = rd_load & ~rq_ram & rq_va;
-    wire [23:0] rd_early = ~rd_load ? 24'd0
-                         : rq_ram ? (({18'd0, ram_rdata[11:6]} << `TMC429_F_RAM_ODD_LSB)
-                                    | ({18'd0, ram_rdata[5:0]} << `TMC429_F_RAM_EVEN_LSB))
-                         : (st_data | sh_data);
+    assign      rd_round = rd_va & v_up;
     always @(*) begin
-        rd_data = rd_early | {12'd0, {12{rd_va}} & v_rd};
+        if (!rd_load)
+            rd_data = 24'd0;
+        else if (rq_ram)
+            rd_data = ({18'd0, ram_rdata[11:6]} << `TMC429_F_RAM_ODD_LSB)
+                    | ({18'd0, ram_rdata[5:0]} << `TMC429_F_RAM_EVEN_LSB);
+        else
+            rd_data = st_data | sh_data | {12'd0, {12{rq_va}} & v_sel};
     end
 endmodule
 

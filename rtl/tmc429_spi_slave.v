@@ -5,7 +5,9 @@
 // bits 31..24 of the output register. Each synchronized rising SCK_C edge while nSCS_C
 // is low shifts SDI_C in (MSB first, counter saturates at 63); when the 8th bit is in
 // and RW = 1 the read data is loaded in the same cycle, where data bit 23 leaves on the
-// next falling edge. Each synchronized falling SCK_C edge after the first bit shifts the
+// next falling edge; v_actual's rounding toward 0 (rd_round) is added to the data's bits 11..0 in
+// the edge after (a falling edge in that edge shifts the sum), twelve falling edges before they
+// leave. Each synchronized falling SCK_C edge after the first bit shifts the
 // output register left (the first falling edge presents bit 31, already on the pin). An SCK_C
 // edge in the cycle of the nSCS_C falling edge is ignored (C13). At the synchronized
 // rising edge of nSCS_C a frame of exactly 32 bits is executed (`exec` pulse, a register).
@@ -25,6 +27,9 @@ module tmc429_spi_slave (
     // least one edge before the read data is loaded, for a synchronous (block RAM) read
     output wire [5:0]  rd_addr_q,
     input  wire [23:0] rd_data,
+    // the read value is rd_data plus 1 in bits 11..0 (v_actual of a negative V with a nonzero
+    // low byte, C42): the register file's read multiplexer has no incrementer
+    input  wire        rd_round,
     // the read data is loaded in this edge (the 8th bit of a read arrives): rd_data is used
     // in no other edge
     output wire        rd_load,
@@ -59,6 +64,7 @@ module tmc429_spi_slave (
     reg [5:0]  cnt;
     reg        exec_q;
     reg        fall_q;
+    reg        round_q;   // the read value loaded in the last edge gets its rounding now
 
     // the falling edge ~nscs_q & nscs_h, formed one edge ahead into a register (after an edge
     // nscs_h is the nscs_q before it and nscs_q the first stage's level): the frame start, which
@@ -102,20 +108,28 @@ module tmc429_spi_slave (
         end
     end
 
+    // the data's bits 11..0 sit at bits 18..7 after the load
+    wire [11:0] rnd_f  = out_sr[18:7] + 12'd1;
+    wire [31:0] out_rn = round_q ? {out_sr[31:19], rnd_f, out_sr[6:0]} : out_sr;
     always @(posedge clk) begin
         if (rst) begin
-            in_sr  <= 32'd0;
-            out_sr <= 32'd0;
+            in_sr   <= 32'd0;
+            out_sr  <= 32'd0;
+            round_q <= 1'b0;
         end else if (nscs_fall) begin
-            out_sr <= {status, 24'd0};
+            out_sr  <= {status, 24'd0};
+            round_q <= 1'b0;
         end else begin
             if (sck_rise)
                 in_sr <= in_next;
+            round_q <= rd_load & rd_round;
             if (rd_load)
                 // after 7 falling edges the reply's bit 23 sits at bit 30
                 out_sr <= {out_sr[31], rd_data, 7'd0};
             else if (sck_fall)
-                out_sr <= {out_sr[30:0], 1'b0};
+                out_sr <= {out_rn[30:0], 1'b0};
+            else
+                out_sr <= out_rn;
         end
     end
 endmodule

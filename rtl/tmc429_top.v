@@ -81,6 +81,7 @@ module tmc429_top #(
     wire [6:0]  rd_addr;
     wire [5:0]  rd_addr_q;
     wire [23:0] rd_data;
+    wire        rd_round;
     wire        frame_start, exec, exec_nx, active, sdo, rd_load;
     wire [31:0] cmd;
     wire [7:0]  addr_nx;
@@ -88,7 +89,7 @@ module tmc429_top #(
     tmc429_spi_slave u_spi (
         .clk(clk), .rst(rst),
         .nscs_c(nscs_c), .sck_c(sck_c), .sdi_c(sdi_c),
-        .status(status), .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_data(rd_data),
+        .status(status), .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_data(rd_data), .rd_round(rd_round),
         .rd_load(rd_load), .frame_start(frame_start), .exec(exec), .cmd(cmd),
         .exec_nx(exec_nx), .addr_nx(addr_nx), .active(active), .sdo(sdo));
 
@@ -120,7 +121,7 @@ module tmc429_top #(
     tmc429_regfile #(.CHIP(CHIP)) u_regs (
         .clk(clk), .rst(rst),
         .exec(exec), .cmd(cmd), .exec_nx(exec_nx), .addr_nx(addr_nx), .frame_start(frame_start),
-        .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_load(rd_load), .rd_data(rd_data),
+        .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_load(rd_load), .rd_data(rd_data), .rd_round(rd_round),
         .ref_q(ref_q), .refr_q(refr_q),
         .status(status), .nint_q(nint_q), .sdo_int(sdo_int),
         .poscmp_q(poscmp_q), .pd(pd), .prescaler(prescaler),

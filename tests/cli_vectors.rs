@@ -284,8 +284,10 @@ fn pins_files_are_consistent() {
     let stem = dir.join("spi-datasheet-tmc429");
     assert_eq!(printed.lines().count(), 3);
     let cols = std::fs::read_to_string(stem.with_extension("cols")).unwrap();
-    assert!(cols.starts_with("_sentinel 4 in\nrst 1 in\nnscs_c 1 in\nsck_c 1 in\nsdi_c 1 in\nstatus 8 in\nrd_data 24 in\nrd_addr 7 out\n"));
-    assert!(cols.ends_with("sdo 1 out\n_check 5 out\n"));
+    assert!(cols.starts_with(
+        "_sentinel 4 in\nrst 1 in\nnscs_c 1 in\nsck_c 1 in\nsdi_c 1 in\nstatus 8 in\nrd_data 24 in\nrd_round 1 in\nrd_addr 7 out\n"
+    ));
+    assert!(cols.ends_with("sdo 1 out\n_check 4 out\n"));
     assert_eq!(meta(&stem, "width"), "88");
     assert_eq!(meta(&stem, "cycles"), "1045");
     assert_eq!(meta(&stem, "replay"), "ready");
@@ -608,9 +610,12 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
         assert_eq!(field(lines[m * per + 1], 247, 1), 0);
     }
     let m0 = &lines[..per];
-    // the switch stop holds while REF1 is high and motor 0 moves left; taken in the motor's
-    // condition slot (C52, C61), V is 0 after it
-    let s = m0.iter().position(|l| field(l, 17, 1) == 1 && field(l, 245, 1) == 1).expect("a switch stop");
+    // the switch stop holds while REF1 is high and motor 0 moves left; the motor's condition
+    // slot takes the condition of the edge before it (C52, C61), V is 0 after it
+    let s = 1 + m0
+        .windows(2)
+        .position(|w| field(w[0], 17, 1) == 1 && field(w[1], 17, 1) == 1 && field(w[1], 245, 1) == 1)
+        .expect("a switch stop");
     assert_eq!(field(m0[s + 1], 89, 20), 0);
     // the µC write x_actual := 0 (IDX 1) is executed in its edge
     let z = m0.iter().position(|l| field(l, 161, 1) == 1 && field(l, 157, 4) == 1).expect("x_actual write");

@@ -247,7 +247,9 @@ impl Tmc429 {
     pub fn spi_ports(&self) -> spi_slave::SpiPorts {
         let mut p = self.spi.ports(&self.sync);
         p.status = self.status();
-        p.rd_data = self.read_register(p.rd_addr) & 0xFF_FFFF;
+        let (d, r) = self.read_register_parts(p.rd_addr);
+        p.rd_data = d & 0xFF_FFFF;
+        p.rd_round = r;
         p
     }
 
@@ -442,8 +444,8 @@ impl Tmc429 {
                 wake = self.power_down;
             }
             SpiEvent::ReadAddress(a7) => {
-                let d = self.read_register(a7);
-                self.spi.load_data(d);
+                let (d, r) = self.read_register_parts(a7);
+                self.spi.load_data(d, r);
             }
             SpiEvent::Execute(d) => exec = Some(d),
             SpiEvent::Deselect | SpiEvent::None => {}

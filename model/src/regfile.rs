@@ -75,6 +75,18 @@ impl Global {
 }
 
 impl Tmc429 {
+    /// The read value of a 7-bit address as the register file presents it to the SPI slave
+    /// (`rtl/tmc429_regfile.v`): v_actual as V >> 8 rounded down, with its rounding toward 0
+    /// (C42: 1 for a negative V with a nonzero low byte) apart, which the slave adds to bits
+    /// 11..0 in the edge after the load; every other register as [`Tmc429::read_register`].
+    pub fn read_register_parts(&self, a7: u8) -> (u32, bool) {
+        if let (Some((_, Some(m))), Addr::Motor(_, idx::V_ACTUAL)) = (regmap::lookup(self.chip, a7), Addr::from_a7(a7)) {
+            let v = self.motors[m as usize].v;
+            return (f::V_ACTUAL.put((v >> 8) as u32), v < 0 && v & 0xFF != 0);
+        }
+        (self.read_register(a7), false)
+    }
+
     /// Register read data (24 bits) of a 7-bit address in the current state (C20–C31).
     pub fn read_register(&self, a7: u8) -> u32 {
         let Some((reg, motor)) = regmap::lookup(self.chip, a7) else {

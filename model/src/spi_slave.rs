@@ -26,11 +26,14 @@ pub struct SpiSlave {
     pub count: u8,
     /// Synchronized nSCS_C is low (frame in progress).
     pub active: bool,
+    /// The read value loaded in the last edge is 1 more in its bits 11..0 (v_actual of a
+    /// negative V with a nonzero low byte, C42): added in this edge, before a shift.
+    pub round: bool,
 }
 
 impl SpiSlave {
     pub fn reset() -> Self {
-        SpiSlave { shift_in: 0, shift_out: 0, count: 0, active: false }
+        SpiSlave { shift_in: 0, shift_out: 0, count: 0, active: false, round: false }
     }
 
     /// One CLK edge, from the synchronizer state before the edge (`s`). Returns what the chip must
@@ -38,6 +41,12 @@ impl SpiSlave {
     /// and [`SpiSlave::load_data`].
     #[inline]
     pub fn step(&mut self, s: &SyncBank) -> SpiEvent {
+        if self.round {
+            // the read value's bits 11..0 sit at bits 18..7; a new status byte replaces them
+            let f = (self.shift_out >> 7).wrapping_add(1) & 0xFFF;
+            self.shift_out = (self.shift_out & !(0xFFF << 7)) | f << 7;
+            self.round = false;
+        }
         self.active = !s.level(bit::NSCS_C);
         if s.fell(bit::NSCS_C) {
             self.count = 0;
@@ -71,8 +80,12 @@ impl SpiSlave {
 
     /// Loads read data after the 8th rising SCK_C edge: seven falling edges have shifted the
     /// register by then, so data bit 23 goes to bit 30 and leaves on the 8th falling edge.
-    pub fn load_data(&mut self, data: u32) {
+    /// `round`: the read value is `data` plus 1 in bits 11..0, added in the next edge (its bits
+    /// leave twelve falling edges later at the earliest), so that the register file's read
+    /// multiplexer has no incrementer.
+    pub fn load_data(&mut self, data: u32, round: bool) {
         self.shift_out = (self.shift_out & 0x8000_0000) | ((data & 0xFF_FFFF) << 7);
+        self.round = round;
     }
 
     /// The data output bit.
@@ -83,15 +96,18 @@ impl SpiSlave {
 }
 
 /// The µC SPI slave's ports as `rtl/tmc429_spi_slave.v` has them, for one CLK edge (the unit
-/// boundary of the test vectors, docs/vectors.md). Inputs besides the three pins: `status` and
-/// `rd_data`, driven by the register file from the old state. Outputs: combinational functions
+/// boundary of the test vectors, docs/vectors.md). Inputs besides the three pins: `status`,
+/// `rd_data` and `rd_round`, driven by the register file from the old state. Outputs: combinational functions
 /// of the slave's registers (the synchronizer flops, the shift registers and the bit counter).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SpiPorts {
     /// Status byte the register file presents (loaded at `frame_start`, C10).
     pub status: u8,
-    /// Read data of `rd_addr` the register file presents (loaded after the 8th bit of a read).
+    /// Read data of `rd_addr` the register file presents (loaded after the 8th bit of a read),
+    /// v_actual without its rounding toward 0.
     pub rd_data: u32,
+    /// v_actual's rounding toward 0: the read value is `rd_data` plus 1 in bits 11..0.
+    pub rd_round: bool,
     /// Address of the frame being received: bits 7..1 of the input register after the next shift.
     pub rd_addr: u8,
     /// Synchronized nSCS_C falling edge (acted on at the next CLK edge).
@@ -108,12 +124,13 @@ pub struct SpiPorts {
 
 impl SpiSlave {
     /// The outputs of the slave's ports for the register state `self` and the synchronizer
-    /// state `s`; `status` and `rd_data` are left 0 (the register file fills them in).
+    /// state `s`; `status`, `rd_data` and `rd_round` are left 0 (the register file fills them in).
     pub fn ports(&self, s: &SyncBank) -> SpiPorts {
         let in_next = (self.shift_in << 1) | s.level(bit::SDI_C) as u32;
         SpiPorts {
             status: 0,
             rd_data: 0,
+            rd_round: false,
             rd_addr: ((in_next >> 1) & 0x7F) as u8,
             frame_start: s.fell(bit::NSCS_C),
             exec: s.rose(bit::NSCS_C) && self.count == 32,

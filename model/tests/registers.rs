@@ -107,6 +107,26 @@ fn v_actual_write() {
     assert!(v >= 5 * 256 && v & 0xFF == 0 || v % 100 == 5 * 256 % 100, "fraction cleared, then ramps on: {v}");
 }
 
+/// C42: v_actual reads sign(V)·(|V| >> 8), rounded toward 0: a negative V with a nonzero low
+/// byte reads one more than V >> 8 (the register file hands the SPI slave V >> 8 and the rounding
+/// bit apart, docs/rtl.md). V = −100·k after k ramp ticks at a_max 100, frozen in HOLD_MODE.
+#[test]
+fn v_actual_read_rounds_toward_zero() {
+    for (k, expect) in [(1, 0), (2, 0), (3, -1), (5, -1), (6, -2), (13, -5), (41, -16)] {
+        let mut h = host(Chip::Tmc429);
+        // ramp_div 6: a ramp tick every 64 frames, so none falls in the HOLD_MODE write
+        motion_setup(&mut h, 0, 0, 6, 0, 2047, 100, 0, 2);
+        wr(&mut h, 0, V_TARGET, (-1000i32 as u32) & 0xFFF);
+        while h.chip().motor(0).v > -100 * k {
+            h.wait(1);
+        }
+        wr(&mut h, 0, REF_CONF_RM, 3); // HOLD_MODE: V stays
+        let v = h.chip().motor(0).v;
+        assert_eq!(v, -100 * k, "k = {k}");
+        assert_eq!(s12(rd(&mut h, 0, V_ACTUAL)), expect, "V = {v}");
+    }
+}
+
 /// C27: writing x_latched (any data) arms the latch; x_latched itself is read-only.
 #[test]
 fn x_latched_arms_latch() {

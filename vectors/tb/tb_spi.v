@@ -7,16 +7,16 @@
 
 module tb_spi;
     parameter CHIP = 1;
-    localparam W_IN  = 36;
+    localparam W_IN  = 37;
     localparam W_OUT = 43;
     localparam UNIT  = "spi";
 
 `include "vec_player.vh"
 
     tmc429_spi_slave dut (
-        .clk(clk), .rst(vin[35]),
-        .nscs_c(vin[34]), .sck_c(vin[33]), .sdi_c(vin[32]),
-        .status(vin[31:24]), .rd_data(vin[23:0]),
+        .clk(clk), .rst(vin[36]),
+        .nscs_c(vin[35]), .sck_c(vin[34]), .sdi_c(vin[33]),
+        .status(vin[32:25]), .rd_data(vin[24:1]), .rd_round(vin[0]),
         .rd_addr(vout[42:36]), .frame_start(vout[35]), .exec(vout[34]),
         .cmd(vout[33:2]), .active(vout[1]), .sdo(vout[0]));
 endmodule

@@ -150,6 +150,7 @@ pub fn spi_layout() -> Layout {
         input("sdi_c", 1),
         input("status", 8),
         input("rd_data", 24),
+        input("rd_round", 1),
         output("rd_addr", 7),
         output("frame_start", 1),
         output("exec", 1),
@@ -161,13 +162,13 @@ pub fn spi_layout() -> Layout {
 
 pub struct SpiPins {
     w: PinWriter,
-    /// status and rd_data the register file presents before the next edge.
-    pre: (u8, u32),
+    /// status, rd_data and rd_round the register file presents before the next edge.
+    pre: (u8, u32, bool),
 }
 
 impl SpiPins {
     pub fn create(stem: &std::path::Path) -> Result<SpiPins, String> {
-        Ok(SpiPins { w: PinWriter::create(stem, spi_layout())?, pre: (0, 0) })
+        Ok(SpiPins { w: PinWriter::create(stem, spi_layout())?, pre: (0, 0, false) })
     }
     fn line(&mut self, rst: bool, i: &Inputs, chip: &Tmc429) -> Result<(), String> {
         let p = chip.spi_ports();
@@ -178,6 +179,7 @@ impl SpiPins {
             i.sdi_c as u64,
             self.pre.0 as u64,
             self.pre.1 as u64,
+            self.pre.2 as u64,
             p.rd_addr as u64,
             p.frame_start as u64,
             p.exec as u64,
@@ -185,7 +187,7 @@ impl SpiPins {
             p.active as u64,
             p.sdo as u64,
         ];
-        self.pre = (p.status, p.rd_data);
+        self.pre = (p.status, p.rd_data, p.rd_round);
         self.w.line(&v)
     }
 }
@@ -193,7 +195,7 @@ impl SpiPins {
 impl Recorder for SpiPins {
     fn reset(&mut self, chip: &Tmc429) -> Result<(), String> {
         let p = chip.spi_ports();
-        self.pre = (p.status, p.rd_data);
+        self.pre = (p.status, p.rd_data, p.rd_round);
         self.line(true, &Inputs::default(), chip)
     }
     #[inline]

@@ -77,7 +77,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("datasheet", "the datagram examples of [428] §6.5 (write, read, RAM, status by an 8-bit frame)"),
     ("registers", "every register of the chip written and read back; motors in HOLD_MODE, no driver-chain datagram"),
     ("chip-hold", "switches, interrupts, nINT, position compare, sdo_int, power down and wake-up; motors in HOLD_MODE"),
-    ("reference-search", "motor 0 searches REF1 in VELOCITY_MODE, stops, is zeroed and moves off in RAMP_MODE"),
+    ("reference-search", "motor 0 searches REF1 in VELOCITY_MODE (v_actual read while it accelerates), stops, is zeroed and moves off in RAMP_MODE"),
     ("ramp-modes", "RAMP_MODE, SOFT_MODE and VELOCITY_MODE moves, a reversal and HOLD_MODE with a v_actual write"),
     ("ramp-boundary", "v_max 2047 / a_max 2047, v_target -2048, a_max 0, v_min > v_max, a move across x = 2^23"),
     ("ramp-p-examples", "RAMP_MODE moves with the pmul/pdiv of the [428] §8.11 method (pmulpdiv.c of [429] §8.1.10.2.3)"),
@@ -211,7 +211,9 @@ fn reference_search() -> B {
     b.m(0, 2, 20).m(0, 3, 400).p_of(0, 1000, 2, 0, 0.05).m(0, 13, 0);
     b.m(0, 11, 0x0800); // STOP interrupt
     b.m(0, IDX_RM, 2).m(0, 4, (-300i32) as u32 & 0xFFF);
-    b.wait(6000).pin(Pin::Ref1, true).wait(400).r(regmap::motor_a7(0, 1)).status8();
+    // v_actual while it accelerates: V negative with a nonzero low byte, read rounded toward 0
+    b.wait(6000).r(regmap::motor_a7(0, 5));
+    b.pin(Pin::Ref1, true).wait(400).r(regmap::motor_a7(0, 1)).status8();
     // zero the position at the switch, leave it in RAMP_MODE
     b.m(0, IDX_RM, 0).m(0, 1, 0).m(0, 0, 0).m(0, 11, 0x08FF);
     b.m(0, 0, 40).wait(2000).pin(Pin::Ref1, false).wait(24_000).r(regmap::motor_a7(0, 1));
