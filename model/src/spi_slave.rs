@@ -97,8 +97,9 @@ impl SpiSlave {
 
 /// The µC SPI slave's ports as `rtl/tmc429_spi_slave.v` has them, for one CLK edge (the unit
 /// boundary of the test vectors, docs/vectors.md). Inputs besides the three pins: `status`,
-/// `rd_data` and `rd_round`, driven by the register file from the old state. Outputs: combinational functions
-/// of the slave's registers (the synchronizer flops, the shift registers and the bit counter).
+/// `rd_data` and `rd_round`, driven by the register file from the old state. Outputs:
+/// combinational functions of the slave's registers (the synchronizer flops, the shift
+/// registers and the bit counter).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SpiPorts {
     /// Status byte the register file presents (loaded at `frame_start`, C10).
