@@ -172,14 +172,17 @@ impl Motor {
         sext24(self.x_target.wrapping_sub(self.x_actual) & MASK24)
     }
 
-    /// The v_actual readout: sign(V)·(|V| >> 8) (C42).
+    /// The v_actual readout: sign(V)·(|V| >> 8) (C42), i.e. V >> 8 plus [`Motor::v_round`].
     #[inline]
     pub fn v_actual(&self) -> i32 {
-        if self.v < 0 {
-            -((-self.v) >> 8)
-        } else {
-            self.v >> 8
-        }
+        (self.v >> 8) + self.v_round() as i32
+    }
+
+    /// The rounding of V >> 8 toward 0 in the v_actual readout (C42): a negative V with a
+    /// nonzero low byte. The register file hands it to the SPI slave apart from V >> 8.
+    #[inline]
+    pub fn v_round(&self) -> bool {
+        self.v < 0 && self.v & 0xFF != 0
     }
 
     /// Microstep index increment per step: 2^(6 − usrs), usrs 7 as 6 (C53, contract of part 2).

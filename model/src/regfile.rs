@@ -81,8 +81,8 @@ impl Tmc429 {
     /// 11..0 in the edge after the load; every other register as [`Tmc429::read_register`].
     pub fn read_register_parts(&self, a7: u8) -> (u32, bool) {
         if let (Some((_, Some(m))), Addr::Motor(_, idx::V_ACTUAL)) = (regmap::lookup(self.chip, a7), Addr::from_a7(a7)) {
-            let v = self.motors[m as usize].v;
-            return (f::V_ACTUAL.put((v >> 8) as u32), v < 0 && v & 0xFF != 0);
+            let mo = &self.motors[m as usize];
+            return (f::V_ACTUAL.put((mo.v >> 8) as u32), mo.v_round());
         }
         (self.read_register(a7), false)
     }
