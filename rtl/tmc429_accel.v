@@ -15,7 +15,17 @@
 // Range: |V|, |T| <= 2047*256, a_max <= 2047. V - T and V + a_max - T >= -2*2047*256 fit in
 // 21 bits; a sum above 2^20 - 1 (wrapping to a negative sign) needs |T - V| > 2^20 - 2^11,
 // and then the other sum is negative anyway, so `land` is exact.
+//
+// a_max is read by nothing else in the ramp tick, so its store is a parameter RAM of this unit
+// (tmc429_wram, one word per motor; the µC writes it beside the register file's shadow RAM,
+// and tmc429_vtarget keeps a copy for the braking law): the RAM is read in every edge at the
+// word of the motor whose ramp phase comes within two edges (phases 14-16, 21-23, 28-30: the
+// edge before the operand edge, or the frozen phase while powered down), and the operand edge
+// takes that read unless the µC wrote the motor's a_max in the read's edge or its own, whose
+// data then holds (C3: the operand is a_max after the operand edge). A word not written since
+// reset reads 0 (C2).
 `default_nettype none
+`include "tmc429_schedule.vh"
 
 module tmc429_accel #(
     parameter NMOT = 3             // motors present (TMC4210: 1, whose operands need no select)
@@ -24,13 +34,14 @@ module tmc429_accel #(
     input  wire        rst,
     /* verilator lint_off UNUSEDSIGNAL */   // NMOT = 1: motor 0's operands alone
     input  wire [2:0]  ld,         // the next cycle is motor m's ramp phase (at most one)
+    input  wire [4:0]  phase,      // prescaler[4:0]
     // per-motor operands after this edge, motor m in bits [w*(m+1)-1 : w*m]
     input  wire [59:0] v_hold,     // V unless its tick loads it, 1/256 units, two's complement
     input  wire [35:0] vt,         // committed target velocity (tmc429_vtarget)
     input  wire [2:0]  stop_soft,  // soft stop action (C61), which this edge does not change
-    input  wire [32:0] a_max,      // a_max before this edge ...
-    input  wire [2:0]  a_max_we,   // ... a µC write of motor m's a_max in this edge ...
-    input  wire [10:0] a_max_wd,   // ... and its data
+    input  wire        a_max_we,   // a µC write of a_max executes in this edge ...
+    input  wire [1:0]  a_max_m,    // ... of this motor ...
+    input  wire [10:0] a_max_wd,   // ... with this data, which holds in the edge after
     /* verilator lint_on UNUSEDSIGNAL */
     output wire [19:0] v_rmp,      // V after the tick
     output wire [11:0] a_rmp,      // a_actual after the tick
@@ -40,32 +51,50 @@ module tmc429_accel #(
     // t_hi = T / 256: vt, 0 while the soft stop acts; each motor's term is ld & ~stop_soft & vt
     reg  [19:0] vs_n, vs;
     reg  [11:0] th_n, t_hi;
-    reg  [10:0] am_n, as;
-    reg         aw_n;
+    reg  [10:0] as;
     generate
         if (NMOT == 1) begin : one
             always @(*) begin
-                vs_n = v_hold[19:0];  am_n = a_max[10:0];  aw_n = a_max_we[0];
+                vs_n = v_hold[19:0];
                 th_n = stop_soft[0] ? 12'd0 : vt[11:0];
             end
         end else begin : three
             integer m;
             always @(*) begin
-                vs_n = 20'd0;  th_n = 12'd0;  am_n = 11'd0;  aw_n = 1'b0;
+                vs_n = 20'd0;  th_n = 12'd0;
                 for (m = 0; m < 3; m = m + 1) begin
                     vs_n = vs_n | (v_hold[20*m +: 20] & {20{ld[m]}});
                     th_n = th_n | (vt[12*m +: 12] & {12{ld[m] & ~stop_soft[m]}});
-                    am_n = am_n | (a_max[11*m +: 11] & {11{ld[m]}});
-                    aw_n = aw_n | (a_max_we[m] & ld[m]);
                 end
             end
         end
     endgenerate
+
+    // a_max's parameter RAM: the word of the motor whose ramp phase is at most two edges away
+    localparam [4:0] R1 = `TMC429_PH_RAMP(1) - 5'd2;
+    localparam [4:0] R2 = `TMC429_PH_RAMP(2) - 5'd2;
+    wire [1:0]  am_ra = (NMOT == 1) ? 2'd0
+                      : ((phase >= R2) ? 2'd2 : ((phase >= R1) ? 2'd1 : 2'd0));
+    wire [10:0] am_q;
+    wire        am_wq;
+    tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_amax (
+        .clk(clk), .rst(rst),
+        .we(a_max_we), .waddr(a_max_m), .wdata(a_max_wd),
+        .re(1'b1), .raddr(am_ra), .q(am_q), .wq(am_wq));
+    // a write of the word read in that edge: the read is void, the write's data holds
+    reg         am_fw;
+    always @(posedge clk) begin
+        if (rst)
+            am_fw <= 1'b0;
+        else
+            am_fw <= a_max_we & (a_max_m == am_ra);
+    end
+    wire        aw_n = am_fw | (a_max_we & (a_max_m == am_ra));
     always @(posedge clk) begin
         if (rst) begin
             vs <= 20'd0;  t_hi <= 12'd0;  as <= 11'd0;
         end else if (|ld[NMOT-1:0]) begin
-            vs <= vs_n;  t_hi <= th_n;  as <= aw_n ? a_max_wd : am_n;
+            vs <= vs_n;  t_hi <= th_n;  as <= aw_n ? a_max_wd : (am_wq ? am_q : 11'd0);
         end
     end
 

@@ -7,8 +7,10 @@
 // registers the motion core uses every cycle, the read mux of the state and the interrupt
 // conditions, events and flags. The read value of a register that only the µC writes comes
 // from the register file's shadow RAM (tmc429_regfile); v_max, p_mul and pdiv, which only
-// the target velocity unit reads, live in its parameter RAM alone (tmc429_vtarget). Register
-// indices and fields: rtl/tmc429_regmap.vh.
+// the target velocity unit reads, live in its parameter RAM alone (tmc429_vtarget), and a_max,
+// which only that unit's snapshot and the ramp tick's operands read, in parameter RAMs of
+// those two units (tmc429_vtarget, tmc429_accel). Register indices and fields:
+// rtl/tmc429_regmap.vh.
 `default_nettype none
 `include "tmc429_regmap.vh"
 
@@ -32,7 +34,6 @@ module tmc429_motor_regs #(
     input  wire        pulse_tick,// pulse phase of a pulse frame
     input  wire [11:0] vt,        // committed target velocity (C41)
     // the ramp tick's operands and results (tmc429_accel, shared by the motors)
-    output reg  [10:0] a_max,
     output wire [19:0] v_hold,    // V after this edge without a tick (tmc429_ramp)
     output wire        stop_soft,
     input  wire [19:0] v_rmp,
@@ -45,7 +46,7 @@ module tmc429_motor_regs #(
     output reg  [1:0]  rm,
     output reg  [3:0]  pulse_div,
     output reg  [3:0]  ramp_div,
-    output wire [4:0]  brake_h,   // ⌈a_max/128⌉ if ramp_div >= pulse_div, else 0 (C50)
+    output wire        brake_en,  // ramp_div >= pulse_div: the braking law's correction applies (C50)
     // motion state (probes)
     output wire [23:0] x_actual,
     output wire [19:0] v,
@@ -112,16 +113,15 @@ module tmc429_motor_regs #(
     wire [7:0] mask_nx = w_int ? wdata[`TMC429_F_INTERRUPT_MASK] : int_mask;
     wire [7:0] w1c     = w_int ? wdata[`TMC429_F_INTERRUPT_FLAGS] : 8'd0;
 
-    // the braking law's correction for the velocity held between ramp ticks (C50)
-    assign brake_h  = (ramp_div >= pulse_div) ? ({1'b0, a_max[10:7]} + {4'd0, a_max[6:0] != 7'd0})
-                                              : 5'd0;
+    // the braking law corrects for the velocity held between ramp ticks when ramp_div >=
+    // pulse_div (C50; tmc429_vtarget forms the correction from its copy of a_max)
+    assign brake_en = ramp_div >= pulse_div;
     assign irq  = int_flags != 8'd0;
 
     always @(posedge clk) begin
         if (rst) begin
             x_target <= 24'd0;
             v_min <= 11'd0;
-            a_max <= 11'd0;
             drv_conf <= `TMC429_RESET_CURRENT_SCALING;
             ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
@@ -143,7 +143,6 @@ module tmc429_motor_regs #(
                 case (widx)
                 `TMC429_IDX_X_TARGET: x_target <= wdata[`TMC429_F_X_TARGET];
                 `TMC429_IDX_V_MIN:    v_min <= wdata[`TMC429_F_V_MIN];
-                `TMC429_IDX_A_MAX:    a_max <= wdata[`TMC429_F_A_MAX];
                 `TMC429_IDX_CURRENT_SCALING:
                        if (HAS_CUR_SCALE) drv_conf <= wdata & `TMC429_WMASK_CURRENT_SCALING;
                 `TMC429_IDX_REF_CONF_RM: begin   // ref_conf: REF_RnL, SOFT_STOP, DISABLE_STOP_R, _L
@@ -158,8 +157,9 @@ module tmc429_motor_regs #(
                 `TMC429_IDX_DX_REF_TOLERANCE:
                        tol_m1 <= {1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]} - 13'd1;
                 // x_actual, v_target, v_actual, x_latched, ustep_count: motion state in
-                // tmc429_ramp; v_max, pmul_pdiv: parameter RAM of tmc429_vtarget; a_actual and
-                // interrupt (above): no storage here
+                // tmc429_ramp; v_max, pmul_pdiv: parameter RAM of tmc429_vtarget; a_max: the
+                // parameter RAMs of tmc429_accel and tmc429_vtarget; a_actual and interrupt
+                // (above): no storage here
                 default: ;
                 endcase
             end

@@ -213,11 +213,10 @@ module tmc429_regfile #(
 
     wire [5:0]  m_rm;
     wire [11:0] m_pulse_div, m_ramp_div;
-    wire [14:0] m_brake_h;
+    wire [2:0]  m_brake_en;
     wire [35:0] m_vt;
-    wire [32:0] m_a_max;
     wire [59:0] m_v_hold;
-    wire [2:0]  m_stop_soft, ph_ramp_ld, am_we;
+    wire [2:0]  m_stop_soft, ph_ramp_ld;
     wire [2:0]  m_v_rnd;      // v_actual = V[19:8] + v_rnd of motor m
     wire [19:0] v_rmp;
     wire [11:0] a_rmp;
@@ -250,7 +249,6 @@ module tmc429_regfile #(
             localparam [4:0] PH_COND = `TMC429_PH_COMMIT(g);
             wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
             assign ph_ramp_ld[g] = ph_ramp_nx;
-            assign am_we[g] = we_m & (jdx == `TMC429_IDX_A_MAX);
             wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_PULSE - 5'd1) : (ph == PH_PULSE));
             assign ramp_tick_nx[g] = ph_ramp_nx & r_due;
             always @(posedge clk) begin
@@ -275,13 +273,13 @@ module tmc429_regfile #(
                 .ramp_tick(ramp_tick[g]),
                 .pulse_tick(pulse_tick[g]),
                 .vt(m_vt[12*g+11:12*g]),
-                .a_max(m_a_max[11*g+10:11*g]), .v_hold(m_v_hold[20*g+19:20*g]),
+                .v_hold(m_v_hold[20*g+19:20*g]),
                 .stop_soft(m_stop_soft[g]),
                 .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
                 .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
-                .brake_h(m_brake_h[5*g+4:5*g]),
+                .brake_en(m_brake_en[g]),
                 .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]), .v_rnd(m_v_rnd[g]),
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
                 .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
@@ -293,18 +291,19 @@ module tmc429_regfile #(
     // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
     // C51): its operands are registered in the edge into a motor's ramp phase
     tmc429_accel #(.NMOT(NMOT)) u_accel (
-        .clk(clk), .rst(rst), .ld(ph_ramp_ld),
-        .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft), .a_max(m_a_max),
-        .a_max_we(am_we), .a_max_wd(wdata[`TMC429_F_A_MAX]),
+        .clk(clk), .rst(rst), .ld(ph_ramp_ld), .phase(ph),
+        .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft),
+        .a_max_we(wr_mot & (jdx == `TMC429_IDX_A_MAX)), .a_max_m(a7[`TMC429_A7_SMDA]),
+        .a_max_wd(wdata[`TMC429_F_A_MAX]),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
 
     // ---- target velocity (C41, C50) -------------------------------------------------------
     tmc429_vtarget #(.NMOT(NMOT), .ROOT_SPEC(NMOT == 1)) u_vt (
         .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
         .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
-        .v_target(p_v_target), .brake_h(m_brake_h),
+        .v_target(p_v_target), .brake_en(m_brake_en),
         .cfg_we(wr_mot), .cfg_m(a7[`TMC429_A7_SMDA]), .cfg_idx(jdx),
-        .cfg_data(wdata[`TMC429_F_PMUL_MSB - 1:0]),   // every bit v_min, v_max, pmul_pdiv store
+        .cfg_data(wdata[`TMC429_F_PMUL_MSB - 1:0]),   // every bit v_min, v_max, a_max, pmul_pdiv store
         .vt(m_vt));
 
     // ---- position compare (C65) -------------------------------------------------------

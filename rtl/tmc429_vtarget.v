@@ -3,11 +3,12 @@
 //
 // Schedule inside the 32-cycle frame (phase p = prescaler[4:0], C41):
 //   p = 7m        snapshot of motor m: dx = x_target - x_actual, rm, pmul, pdiv, v_min,
-//                 v_max, v_target and h are taken from the old state into the A registers
-//                 (v_min, v_max, pmul and pdiv: the synchronous read of the parameter RAMs, whose
-//                 output register is their snapshot)
+//                 v_max, a_max, v_target and ramp_div >= pulse_div are taken from the old
+//                 state into the A registers (v_min, v_max, a_max, pmul and pdiv: the
+//                 synchronous read of the parameter RAMs, whose output register is their
+//                 snapshot)
 //   p = 7m+1      c = min(|dx|, 2^19-1) - 1 (RAMP_MODE) or min(|dx|, 2^19-1) (SOFT_MODE),
-//                 registered shifted by u
+//                 registered shifted by u; h = ⌈a_max/128⌉ when ramp_div >= pulse_div (C50)
 //   p = 7m+2..+5  acc = (c << u) * p_mul (8-bit multiplier word, Horner, 2 bits per cycle)
 //   p = 7m+6..+12 B: RAMP_MODE: square root of Y = (acc << 11) >> pdiv (the radicand of C50),
 //                 two result bits per cycle (14 bits); SOFT_MODE: (c * p_mul) >> (3+pdiv),
@@ -29,7 +30,7 @@
 // (c * p_mul * 2^u) out four bits per cycle; u and "odd" align the last bit with 3 + pdiv.
 //
 // v_max and p_mul/pdiv are read by nothing but the snapshot, so they have no flip-flops, and
-// v_min has a copy for the snapshot: the µC writes them into three parameter RAMs
+// v_min and a_max have a copy for the snapshot: the µC writes them into four parameter RAMs
 // (tmc429_wram, one word per motor) and the snapshot edge reads the word of motor m. A write in
 // a snapshot edge is written one edge later, so the snapshot gives the old value, as the
 // register did (C3); a word not written since reset reads 0 (C2). Register indices and fields:
@@ -54,9 +55,9 @@ module tmc429_vtarget #(
     input  wire [71:0] x_target,
     input  wire [71:0] x_actual,
     input  wire [35:0] v_target,
-    // per motor ⌈a_max/128⌉ if ramp_div >= pulse_div, else 0 (C50), motor m in [5m+4:5m]
-    input  wire [14:0] brake_h,
-    // µC write to motor cfg_m's register cfg_idx (v_min, v_max, pmul_pdiv: C22) with data word
+    // per motor ramp_div >= pulse_div: the braking law's correction h applies (C50)
+    input  wire [2:0]  brake_en,
+    // µC write to motor cfg_m's register cfg_idx (v_min, v_max, a_max, pmul_pdiv: C22) with data word
     // bits 14..0; cfg_m, cfg_idx and cfg_data still hold in the edge after cfg_we
     input  wire        cfg_we,
     input  wire [1:0]  cfg_m,
@@ -129,20 +130,20 @@ module tmc429_vtarget #(
     reg [23:0] sx_t, sx_a;
     reg [1:0]  s_rm;
     reg [11:0] s_vtg;
-    reg [4:0]  s_h;
+    reg        s_be;
     always @(*) begin
         case (a_m)
         2'd1: begin
             sx_t = x_target[47:24]; sx_a = x_actual[47:24]; s_rm = rm[3:2];
-            s_vtg = v_target[23:12]; s_h = brake_h[9:5];
+            s_vtg = v_target[23:12]; s_be = brake_en[1];
         end
         2'd2: begin
             sx_t = x_target[71:48]; sx_a = x_actual[71:48]; s_rm = rm[5:4];
-            s_vtg = v_target[35:24]; s_h = brake_h[14:10];
+            s_vtg = v_target[35:24]; s_be = brake_en[2];
         end
         default: begin
             sx_t = x_target[23:0]; sx_a = x_actual[23:0]; s_rm = rm[1:0];
-            s_vtg = v_target[11:0]; s_h = brake_h[4:0];
+            s_vtg = v_target[11:0]; s_be = brake_en[0];
         end
         endcase
     end
@@ -178,7 +179,14 @@ module tmc429_vtarget #(
         .clk(clk), .rst(rst),
         .we(cfg_wr & (cfg_idx == `TMC429_IDX_V_MIN)), .waddr(cfg_m), .wdata(cfg_data[`TMC429_F_V_MIN]),
         .re(snap_re), .raddr(a_m), .q(q_vmin), .wq(wq_vmin));
+    wire [10:0] q_amax;
+    wire        wq_amax;
+    tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_amax (
+        .clk(clk), .rst(rst),
+        .we(cfg_wr & (cfg_idx == `TMC429_IDX_A_MAX)), .waddr(cfg_m), .wdata(cfg_data[`TMC429_F_A_MAX]),
+        .re(snap_re), .raddr(a_m), .q(q_amax), .wq(wq_amax));
     wire [10:0] a_vmin = wq_vmin ? q_vmin : 11'd0;
+    wire [10:0] a_amax = wq_amax ? q_amax : 11'd0;
     wire [10:0] a_vmax = wq_vmax ? q_vmax : 11'd0;
     wire [6:0]  a_pmul = wq_pd ? q_pd[10:4] : 7'd0;
     wire [3:0]  a_pdiv = wq_pd ? q_pd[3:0] : 4'd0;
@@ -187,6 +195,7 @@ module tmc429_vtarget #(
     reg [1:0]  a_rm;
     reg        a_soft;            // a_rm == SOFT_MODE
     reg [11:0] a_vtg;
+    reg        a_be;              // ramp_div >= pulse_div
     reg [4:0]  a_h;
     reg        a_sgn, a_zero;
     reg [20:0] a_cv;              // c << u
@@ -214,7 +223,7 @@ module tmc429_vtarget #(
     always @(posedge clk) begin
         if (rst) begin
             a_dx <= 24'd0; a_rm <= 2'd0; a_soft <= 1'b0;
-            a_vtg <= 12'd0; a_h <= 5'd0;
+            a_vtg <= 12'd0; a_be <= 1'b0; a_h <= 5'd0;
             a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 21'd0; a_w <= 8'd0; acc <= 29'd0;
         end else if (run) begin
             if (a_snap) begin
@@ -222,9 +231,11 @@ module tmc429_vtarget #(
                 a_rm <= s_rm;
                 a_soft <= s_rm == 2'd1;
                 a_vtg <= s_vtg;
-                a_h <= s_h;
+                a_be <= s_be;
             end
             if (a_c) begin
+                // the braking law's correction for the velocity held between ramp ticks (C50)
+                a_h    <= a_be ? ({1'b0, a_amax[10:7]} + {4'd0, a_amax[6:0] != 7'd0}) : 5'd0;
                 a_sgn  <= dx_neg;
                 a_zero <= a_dx == 24'd0;
                 a_cv   <= cv_u;

@@ -1,7 +1,7 @@
 // tb_ramp: replays pin-level vectors of unit `ramp` on tmc429_ramp with the ramp tick's
 // arithmetic tmc429_accel serving it alone, as it serves each motor in its ramp tick
 // (docs/vectors.md).
-//   iverilog -g2005 -I vectors/tb -o tb_ramp vectors/tb/tb_ramp.v rtl/tmc429_ramp.v rtl/tmc429_accel.v
+//   iverilog -g2005 -I vectors/tb -I rtl -o tb_ramp vectors/tb/tb_ramp.v rtl/tmc429_ramp.v rtl/tmc429_accel.v rtl/tmc429_wram.v
 //   vvp tb_ramp +hex=X.hex +cols=X.cols +meta=X.meta
 // One instance replays the motors of the file one after the other (each motor's lines begin
 // with its reset line). CHIP sets HAS_USTEP as tmc429_motor_regs does (0 on the TMC428) and is
@@ -22,13 +22,14 @@ module tb_ramp;
     wire        mc_rmp, stop_soft;
     wire [19:0] v_hold;
     // the operands are registered in the edge before the ramp tick: the next line's ramp
-    // tick, vt and a_max (a_max as it is after that edge's write), the unit's V after that
-    // edge and its soft stop action
+    // tick, vt and a_max (a_max as it is after that edge's write: written into the unit's
+    // parameter RAM in every edge, so the operand edge takes it as the write's data), the
+    // unit's V after that edge and its soft stop action
     tmc429_accel #(.NMOT(1)) accel (
-        .clk(clk), .rst(vin[114]), .ld({2'b00, vin_nx[111]}),
+        .clk(clk), .rst(vin[114]), .ld({2'b00, vin_nx[111]}), .phase(5'd0),
         .v_hold({40'd0, v_hold}), .vt({24'd0, vin_nx[42:31]}),
-        .stop_soft({2'b00, stop_soft}), .a_max({22'd0, vin_nx[72:62]}),
-        .a_max_we(3'b000), .a_max_wd(11'd0),
+        .stop_soft({2'b00, stop_soft}),
+        .a_max_we(1'b1), .a_max_m(2'd0), .a_max_wd(vin_nx[72:62]),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
     tmc429_ramp #(.HAS_USTEP(CHIP != 0)) dut (
         .clk(clk), .rst(vin[114]),

@@ -1,0 +1,98 @@
+//! µC writes of the motion parameters that the RTL keeps in block RAM (v_min, v_max, a_max,
+//! pmul_pdiv: parameter RAMs read in the frame's slots, rtl/tmc429_vtarget.v and
+//! rtl/tmc429_accel.v) executed in every phase of the 32-cycle frame (C41) while a motor moves:
+//! model and RTL agree on every pin and probe in every cycle. A write takes effect in the edge
+//! that executes it (C3), including the edge of a slot's read of that register and the edge
+//! before it, where the RAM's read and the write meet.
+#![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
+
+use tmc429_model::{Chip, Tmc429};
+use tmc429_testbench::rtl::Expected;
+use tmc429_testbench::signals::Compare;
+use tmc429_testbench::stimulus::{motors, Driver, Frame, Txn};
+use tmc429_testbench::{Rtl, Variant};
+
+const X_TARGET: u8 = 0;
+const V_MIN: u8 = 2;
+const V_MAX: u8 = 3;
+const V_TARGET: u8 = 4;
+const A_MAX: u8 = 6;
+const PMUL_PDIV: u8 = 9;
+const REF_CONF_RM: u8 = 10;
+const CLK_CONFIG: u8 = 12;
+
+fn w(m: u8, idx: u8, data: u32) -> Txn {
+    Txn::Frame(Frame::write(m << 4 | idx, data))
+}
+
+/// Runs `txns` on the model and the RTL from reset; the first cycle where they disagree.
+fn first_disagreement(chip: Chip, txns: Vec<Txn>) -> Option<u64> {
+    let mut model = Tmc429::new(chip);
+    let mut rtl = Rtl::new(Variant::Chip(chip));
+    let mut drv = Driver::default();
+    let mut rest = txns.into_iter();
+    let mut cycle = 0u64;
+    loop {
+        if drv.ready() {
+            match rest.next() {
+                Some(t) => drv.start(t),
+                None => return None,
+            }
+        }
+        let inp = drv.step().0;
+        let out = model.tick(&inp);
+        cycle += 1;
+        if !rtl.tick_agrees(&Expected::new(&inp, &out, &model.probes()), Compare::all()) {
+            return Some(cycle);
+        }
+    }
+}
+
+/// Motor `m` moving (ramp and pulse ticks in every frame: pulse_div = ramp_div = 0, so the
+/// braking law's h = ⌈a_max/128⌉ applies, C50) `dx` steps toward x_target, `d` idle cycles,
+/// then the writes `late`, then long enough for them to act (tens of ramp ticks).
+fn scenario(m: u8, rm: u32, dx: u32, d: u32, late: &[(u8, u32)]) -> Vec<Txn> {
+    let mut t = vec![
+        w(m, CLK_CONFIG, 0),
+        w(m, V_MIN, 1),
+        w(m, V_MAX, 600),
+        w(m, A_MAX, 3),
+        w(m, PMUL_PDIV, 0xA207), // a valid pair for a_max 3 at ramp_div = pulse_div = 0
+        w(m, REF_CONF_RM, rm),
+        w(m, V_TARGET, 600),
+        w(m, X_TARGET, dx),
+        Txn::Idle(3000),
+    ];
+    t.push(Txn::Idle(d + 1));
+    t.extend(late.iter().map(|&(idx, data)| w(m, idx, data)));
+    t.push(Txn::Idle(2000));
+    t
+}
+
+/// Every delay 0..32 before the late writes puts their executing edges in every phase.
+fn sweep(rm: u32, dx: u32, late: &[(u8, u32)]) {
+    for chip in Chip::ALL {
+        for m in 0..motors(chip) as u8 {
+            for d in 0..32 {
+                if let Some(c) = first_disagreement(chip, scenario(m, rm, dx, d, late)) {
+                    panic!("{chip} motor {m}, rm {rm}, delay {d}: model and RTL disagree at cycle {c}");
+                }
+            }
+        }
+    }
+}
+
+/// VELOCITY_MODE: a_max (the ramp tick's operand) written while V ramps toward v_target (3 per
+/// tick before, 40 and then 7 after).
+#[test]
+fn a_max_written_in_every_phase_velocity_mode() {
+    sweep(2, 2000, &[(A_MAX, 40), (A_MAX, 7)]);
+}
+
+/// RAMP_MODE five steps from the target, where the braking law sets the target velocity (about
+/// 25, below v_max): a_max (h from 1 to 3), v_max (clamping at 20), v_min and pmul_pdiv written
+/// while the motor creeps toward x_target.
+#[test]
+fn parameters_written_in_every_phase_ramp_mode() {
+    sweep(0, 5, &[(A_MAX, 300), (V_MAX, 20), (V_MIN, 5), (PMUL_PDIV, 0xC008)]);
+}
