@@ -1,5 +1,5 @@
-//! µC writes of the motion parameters that the RTL keeps in block RAM (v_min, v_max, a_max,
-//! pmul_pdiv: parameter RAMs read in the frame's slots, rtl/tmc429_vtarget.v and
+//! µC writes of the motion parameters that the RTL keeps in block RAM (x_target, v_min, v_max,
+//! a_max, pmul_pdiv: parameter RAMs read in the frame's slots, rtl/tmc429_vtarget.v and
 //! rtl/tmc429_accel.v) executed in every phase of the 32-cycle frame (C41) while a motor moves:
 //! model and RTL agree on every pin and probe in every cycle. A write takes effect in the edge
 //! that executes it (C3), including the edge of a slot's read of that register and the edge
@@ -90,9 +90,9 @@ fn a_max_written_in_every_phase_velocity_mode() {
 }
 
 /// RAMP_MODE five steps from the target, where the braking law sets the target velocity (about
-/// 25, below v_max): a_max (h from 1 to 3), v_max (clamping at 20), v_min and pmul_pdiv written
-/// while the motor creeps toward x_target.
+/// 25, below v_max): a_max (h from 1 to 3), v_max (clamping at 20), v_min, pmul_pdiv and
+/// x_target (three steps from the start, then 40) written while the motor creeps toward it.
 #[test]
 fn parameters_written_in_every_phase_ramp_mode() {
-    sweep(0, 5, &[(A_MAX, 300), (V_MAX, 20), (V_MIN, 5), (PMUL_PDIV, 0xC008)]);
+    sweep(0, 5, &[(A_MAX, 300), (V_MAX, 20), (V_MIN, 5), (PMUL_PDIV, 0xC008), (X_TARGET, 3), (X_TARGET, 40)]);
 }
