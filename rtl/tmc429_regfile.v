@@ -300,10 +300,10 @@ module tmc429_regfile #(
     // ---- target velocity (C41, C50) -------------------------------------------------------
     tmc429_vtarget #(.NMOT(NMOT), .ROOT_SPEC(NMOT == 1)) u_vt (
         .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
-        .rm(m_rm), .x_actual(p_x_actual),
+        .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
         .v_target(p_v_target), .brake_en(m_brake_en),
         .cfg_we(wr_mot), .cfg_m(a7[`TMC429_A7_SMDA]), .cfg_idx(jdx),
-        .cfg_data(wdata),
+        .cfg_data(wdata[`TMC429_F_PMUL_MSB - 1:0]),   // every bit v_min, v_max, a_max, pmul_pdiv store
         .vt(m_vt));
 
     // ---- position compare (C65) -------------------------------------------------------

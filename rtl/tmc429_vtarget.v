@@ -52,16 +52,17 @@ module tmc429_vtarget #(
     input  wire [4:0]  phase,     // prescaler[4:0]
     // per-motor registers, motor m in bits [w*(m+1)-1 : w*m]
     input  wire [5:0]  rm,
+    input  wire [71:0] x_target,
     input  wire [71:0] x_actual,
     input  wire [35:0] v_target,
     // per motor ramp_div >= pulse_div: the braking law's correction h applies (C50)
     input  wire [2:0]  brake_en,
     // µC write to motor cfg_m's register cfg_idx (v_min, v_max, a_max, pmul_pdiv: C22) with data word
-    // bits 23..0; cfg_m, cfg_idx and cfg_data still hold in the edge after cfg_we
+    // bits 14..0; cfg_m, cfg_idx and cfg_data still hold in the edge after cfg_we
     input  wire        cfg_we,
     input  wire [1:0]  cfg_m,
     input  wire [3:0]  cfg_idx,
-    input  wire [23:0] cfg_data,
+    input  wire [14:0] cfg_data,
     // committed target velocities (12-bit two's complement), motor m in [12m+11:12m]
     output wire [35:0] vt
 );
@@ -126,22 +127,22 @@ module tmc429_vtarget #(
     end
 
     // ---- A: snapshot, c, multiply ------------------------------------------------------
-    reg [23:0] sx_a;
+    reg [23:0] sx_t, sx_a;
     reg [1:0]  s_rm;
     reg [11:0] s_vtg;
     reg        s_be;
     always @(*) begin
         case (a_m)
         2'd1: begin
-            sx_a = x_actual[47:24]; s_rm = rm[3:2];
+            sx_t = x_target[47:24]; sx_a = x_actual[47:24]; s_rm = rm[3:2];
             s_vtg = v_target[23:12]; s_be = brake_en[1];
         end
         2'd2: begin
-            sx_a = x_actual[71:48]; s_rm = rm[5:4];
+            sx_t = x_target[71:48]; sx_a = x_actual[71:48]; s_rm = rm[5:4];
             s_vtg = v_target[35:24]; s_be = brake_en[2];
         end
         default: begin
-            sx_a = x_actual[23:0]; s_rm = rm[1:0];
+            sx_t = x_target[23:0]; sx_a = x_actual[23:0]; s_rm = rm[1:0];
             s_vtg = v_target[11:0]; s_be = brake_en[0];
         end
         endcase
@@ -184,26 +185,6 @@ module tmc429_vtarget #(
         .clk(clk), .rst(rst),
         .we(cfg_wr & (cfg_idx == `TMC429_IDX_A_MAX)), .waddr(cfg_m), .wdata(cfg_data[`TMC429_F_A_MAX]),
         .re(snap_re), .raddr(a_m), .q(q_amax), .wq(wq_amax));
-    // x_target's copy is read in the edge before the snapshot (the schedule's next state says
-    // which motor is snapshot next; while powered down every edge reads it again), so that its
-    // output is at hand for the snapshot's subtraction: a write in the read's edge is void in
-    // the read and is taken from cfg_data at the snapshot, and a write in the snapshot edge
-    // comes after the read (the snapshot takes the old value, C3)
-    wire [23:0] q_xt;
-    wire        wq_xt;
-    wire        xt_we = cfg_we & (cfg_idx == `TMC429_IDX_X_TARGET);
-    tmc429_wram #(.AW(2), .DW(24), .WMASK(4'b0111)) u_xt (
-        .clk(clk), .rst(rst),
-        .we(xt_we), .waddr(cfg_m), .wdata(cfg_data[`TMC429_F_X_TARGET]),
-        .re(n_a_snap), .raddr(n_a_m), .q(q_xt), .wq(wq_xt));
-    reg         xt_fw;
-    always @(posedge clk) begin
-        if (rst)
-            xt_fw <= 1'b0;
-        else
-            xt_fw <= xt_we & n_a_snap & (cfg_m == n_a_m);
-    end
-    wire [23:0] sx_t = xt_fw ? cfg_data[`TMC429_F_X_TARGET] : (wq_xt ? q_xt : 24'd0);
     wire [10:0] a_vmin = wq_vmin ? q_vmin : 11'd0;
     wire [10:0] a_amax = wq_amax ? q_amax : 11'd0;
     wire [10:0] a_vmax = wq_vmax ? q_vmax : 11'd0;

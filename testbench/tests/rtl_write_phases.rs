@@ -1,9 +1,10 @@
-//! µC writes of the motion parameters that the RTL keeps in block RAM (x_target, v_min, v_max,
-//! a_max, pmul_pdiv: parameter RAMs read in the frame's slots, rtl/tmc429_vtarget.v and
-//! rtl/tmc429_accel.v) executed in every phase of the 32-cycle frame (C41) while a motor moves:
-//! model and RTL agree on every pin and probe in every cycle. A write takes effect in the edge
-//! that executes it (C3), including the edge of a slot's read of that register and the edge
-//! before it, where the RAM's read and the write meet.
+//! µC writes of the motion parameters that the RTL keeps in block RAM (v_min, v_max, a_max,
+//! pmul_pdiv: parameter RAMs read in the frame's slots, rtl/tmc429_vtarget.v and
+//! rtl/tmc429_accel.v) and of x_target (which the target-velocity snapshot selects) executed in
+//! every phase of the 32-cycle frame (C41) while a motor moves: model and RTL agree on every pin
+//! and probe in every cycle. A write takes effect in the edge that executes it (C3), including
+//! the edge of a slot's read of that register and the edge before it, where the RAM's read and
+//! the write meet.
 #![cfg(not(tmc429_no_rtl))] // needs Verilator (testbench/build.rs)
 
 use tmc429_model::{Chip, Tmc429};
