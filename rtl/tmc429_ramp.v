@@ -84,7 +84,7 @@ module tmc429_ramp #(
     output reg         c_tol,
     output wire [11:0] v_actual,   // readout sign(V) * (|V| >> 8) (C42)
     // V >> 8 rounds up toward 0: V < 0 with a nonzero low byte (v_actual = V[19:8] + v_rnd),
-    // one LUT of two flip-flops, for the read path's single incrementer (tmc429_regfile)
+    // one LUT of two flip-flops: the read path's rounding bit (rd_round, tmc429_spi_slave)
     output wire        v_rnd
 );
     reg ref_prev;
