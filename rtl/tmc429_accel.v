@@ -17,11 +17,11 @@
 // and then the other sum is negative anyway, so `land` is exact.
 //
 // a_max is read by nothing else in the ramp tick, so its store is a parameter RAM of this unit
-// (tmc429_wram, one word per motor; the µC writes it beside the register file's shadow RAM,
+// (tmc429_pram, one word per motor; the µC writes it beside the register file's shadow RAM,
 // and tmc429_vtarget keeps a copy for the braking law): the RAM is read in every edge at the
 // word of the motor whose ramp phase comes within two edges (phases 14-16, 21-23, 28-30: the
 // edge before the operand edge, or the frozen phase while powered down), and the operand edge
-// takes that read unless the µC wrote the motor's a_max in the read's edge or its own, whose
+// takes that value unless the µC writes the motor's a_max in the operand edge itself, whose
 // data then holds (C3: the operand is a_max after the operand edge). A word not written since
 // reset reads 0 (C2).
 `default_nettype none
@@ -71,30 +71,19 @@ module tmc429_accel #(
     endgenerate
 
     // a_max's parameter RAM: the word of the motor whose ramp phase is at most two edges away
-    localparam [4:0] R1 = `TMC429_PH_RAMP(1) - 5'd2;
-    localparam [4:0] R2 = `TMC429_PH_RAMP(2) - 5'd2;
-    wire [1:0]  am_ra = (NMOT == 1) ? 2'd0
-                      : ((phase >= R2) ? 2'd2 : ((phase >= R1) ? 2'd1 : 2'd0));
-    wire [10:0] am_q;
-    wire        am_wq;
-    tmc429_wram #(.AW(2), .DW(11), .WMASK(4'b0111)) u_amax (
-        .clk(clk), .rst(rst),
-        .we(a_max_we), .waddr(a_max_m), .wdata(a_max_wd),
-        .re(1'b1), .raddr(am_ra), .q(am_q), .wq(am_wq));
-    // a write of the word read in that edge: the read is void, the write's data holds
-    reg         am_fw;
-    always @(posedge clk) begin
-        if (rst)
-            am_fw <= 1'b0;
-        else
-            am_fw <= a_max_we & (a_max_m == am_ra);
-    end
-    wire        aw_n = am_fw | (a_max_we & (a_max_m == am_ra));
+    wire [1:0]  am_ra;
+    wire [10:0] am_val;
+    tmc429_pram #(.DW(11), .NMOT(NMOT),
+                  .R1(`TMC429_PH_RAMP(1) - 5'd2), .R2(`TMC429_PH_RAMP(2) - 5'd2)) u_amax (
+        .clk(clk), .rst(rst), .phase(phase),
+        .we(a_max_we), .wm(a_max_m), .wd(a_max_wd), .ra(am_ra), .val(am_val));
+    // the operand is a_max after the operand edge: a write of the word read in this edge holds
+    wire        aw_now = a_max_we & (a_max_m == am_ra);
     always @(posedge clk) begin
         if (rst) begin
             vs <= 20'd0;  t_hi <= 12'd0;  as <= 11'd0;
         end else if (|ld[NMOT-1:0]) begin
-            vs <= vs_n;  t_hi <= th_n;  as <= aw_n ? a_max_wd : (am_wq ? am_q : 11'd0);
+            vs <= vs_n;  t_hi <= th_n;  as <= aw_now ? a_max_wd : am_val;
         end
     end
 

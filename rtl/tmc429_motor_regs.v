@@ -9,8 +9,11 @@
 // from the register file's shadow RAM (tmc429_regfile); v_max, p_mul and pdiv, which only
 // the target velocity unit reads, live in its parameter RAM alone (tmc429_vtarget), and a_max,
 // which only that unit's snapshot and the ramp tick's operands read, in parameter RAMs of
-// those two units (tmc429_vtarget, tmc429_accel). Register indices and fields:
-// rtl/tmc429_regmap.vh.
+// those two units (tmc429_vtarget, tmc429_accel). v_min and dx_ref_tolerance, which the ramp
+// unit reads for the conditions its condition slot applies (C52, C61) and the target
+// velocity unit at its snapshot, are parameter RAMs of the register file read for the motor
+// whose condition slot is next (tmc429_pram) and of tmc429_vtarget. Register indices and
+// fields: rtl/tmc429_regmap.vh.
 `default_nettype none
 `include "tmc429_regmap.vh"
 
@@ -33,6 +36,10 @@ module tmc429_motor_regs #(
     input  wire        ramp_tick, // ramp phase of a ramp frame (C40, C41)
     input  wire        pulse_tick,// pulse phase of a pulse frame
     input  wire [11:0] vt,        // committed target velocity (C41)
+    // v_min and dx_ref_tolerance - 1 (-1 for 0) of the motor whose condition slot is next:
+    // valid in the cycle before this motor's condition slot (tmc429_pram in tmc429_regfile)
+    input  wire [10:0] v_min,
+    input  wire [12:0] tol_m1,
     // the ramp tick's operands and results (tmc429_accel, shared by the motors)
     output wire [19:0] v_hold,    // V after this edge without a tick (tmc429_ramp)
     output wire        stop_soft,
@@ -61,11 +68,9 @@ module tmc429_motor_regs #(
     // a_threshold at their TMC429_F_* bits)
     output reg  [23:0] drv_conf
 );
-    reg [10:0] v_min;
     reg [2:0]  usrs;
     reg [3:0]  ref_conf;
     reg [7:0]  int_mask, int_flags, int_hist;
-    reg [12:0] tol_m1;         // dx_ref_tolerance - 1 (-1 for 0): the tolerance window's form
     wire       lp;
     /* verilator lint_off UNUSEDSIGNAL */   // the unit's condition levels (its vector boundary):
     wire       stop, tol_ok;                // the interrupt takes their registered copies
@@ -121,7 +126,6 @@ module tmc429_motor_regs #(
     always @(posedge clk) begin
         if (rst) begin
             x_target <= 24'd0;
-            v_min <= 11'd0;
             drv_conf <= `TMC429_RESET_CURRENT_SCALING;
             ref_conf <= 4'd0;   rm <= 2'd0;
             int_mask <= 8'd0;   int_flags <= 8'd0;
@@ -129,7 +133,6 @@ module tmc429_motor_regs #(
             cq_r <= COND_RESET[7];  cq_l <= COND_RESET[6];    // the LOW bits 5, 4 their complements
             cq_x0 <= COND_RESET[2];  cq_xeqt <= COND_RESET[0];
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
-            tol_m1 <= 13'h1FFF;         // dx_ref_tolerance 0
         end else begin
             cq_r    <= sw_r;
             cq_l    <= sw_l;
@@ -142,7 +145,6 @@ module tmc429_motor_regs #(
             if (we) begin
                 case (widx)
                 `TMC429_IDX_X_TARGET: x_target <= wdata[`TMC429_F_X_TARGET];
-                `TMC429_IDX_V_MIN:    v_min <= wdata[`TMC429_F_V_MIN];
                 `TMC429_IDX_CURRENT_SCALING:
                        if (HAS_CUR_SCALE) drv_conf <= wdata & `TMC429_WMASK_CURRENT_SCALING;
                 `TMC429_IDX_REF_CONF_RM: begin   // ref_conf: REF_RnL, SOFT_STOP, DISABLE_STOP_R, _L
@@ -154,12 +156,11 @@ module tmc429_motor_regs #(
                            ramp_div <= wdata[`TMC429_F_RAMP_DIV];
                            usrs <= wdata[`TMC429_F_USRS];
                        end
-                `TMC429_IDX_DX_REF_TOLERANCE:
-                       tol_m1 <= {1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]} - 13'd1;
                 // x_actual, v_target, v_actual, x_latched, ustep_count: motion state in
                 // tmc429_ramp; v_max, pmul_pdiv: parameter RAM of tmc429_vtarget; a_max: the
-                // parameter RAMs of tmc429_accel and tmc429_vtarget; a_actual and interrupt
-                // (above): no storage here
+                // parameter RAMs of tmc429_accel and tmc429_vtarget; v_min: those of
+                // tmc429_vtarget and tmc429_regfile; dx_ref_tolerance: that of
+                // tmc429_regfile; a_actual and interrupt (above): no storage here
                 default: ;
                 endcase
             end

@@ -273,6 +273,7 @@ module tmc429_regfile #(
                 .ramp_tick(ramp_tick[g]),
                 .pulse_tick(pulse_tick[g]),
                 .vt(m_vt[12*g+11:12*g]),
+                .v_min(cond_vmin), .tol_m1(cond_tol_m1),
                 .v_hold(m_v_hold[20*g+19:20*g]),
                 .stop_soft(m_stop_soft[g]),
                 .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
@@ -287,6 +288,29 @@ module tmc429_regfile #(
                 .drv_conf(drv_conf[24*g+23:24*g]));
         end
     endgenerate
+
+    // ---- v_min and dx_ref_tolerance of the motor whose condition slot is next ------------
+    // The ramp unit reads them for the conditions its condition slot applies, from the cycle
+    // before that slot (C52, C61): at phase TMC429_PH_COMMIT(m) - 1, or TMC429_PH_COMMIT(m)
+    // while powered down. The parameter RAMs are read in every edge at the word of the motor
+    // whose commit phase is at most two edges away; the other motors' conditions formed from
+    // that value are not applied. The tolerance is stored as dx_ref_tolerance - 1 (-1 for 0,
+    // the reset value), the form of the window's comparison (tmc429_ramp).
+    wire [10:0] cond_vmin;
+    wire [12:0] cond_tol_m1;
+    /* verilator lint_off UNUSEDSIGNAL */   // the word read: for a user taking a write of its edge
+    wire [1:0]  cond_ra_v, cond_ra_t;
+    /* verilator lint_on UNUSEDSIGNAL */
+    localparam [4:0] RC1 = `TMC429_PH_COMMIT(1) - 5'd2;
+    localparam [4:0] RC2 = `TMC429_PH_COMMIT(2) - 5'd2;
+    tmc429_pram #(.DW(11), .NMOT(NMOT), .R1(RC1), .R2(RC2)) u_vmin (
+        .clk(clk), .rst(rst), .phase(ph),
+        .we(wr_mot & (jdx == `TMC429_IDX_V_MIN)), .wm(a7[`TMC429_A7_SMDA]),
+        .wd(wdata[`TMC429_F_V_MIN]), .ra(cond_ra_v), .val(cond_vmin));
+    tmc429_pram #(.DW(13), .NMOT(NMOT), .R1(RC1), .R2(RC2), .RESET(13'h1FFF)) u_tol (
+        .clk(clk), .rst(rst), .phase(ph),
+        .we(wr_mot & (jdx == `TMC429_IDX_DX_REF_TOLERANCE)), .wm(a7[`TMC429_A7_SMDA]),
+        .wd({1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]} - 13'd1), .ra(cond_ra_t), .val(cond_tol_m1));
 
     // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
     // C51): its operands are registered in the edge into a motor's ramp phase

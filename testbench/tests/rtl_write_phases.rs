@@ -1,6 +1,6 @@
 //! µC writes of the motion parameters that the RTL keeps in block RAM (v_min, v_max, a_max,
-//! pmul_pdiv: parameter RAMs read in the frame's slots, rtl/tmc429_vtarget.v and
-//! rtl/tmc429_accel.v) and of x_target (which the target-velocity snapshot selects) executed in
+//! pmul_pdiv, dx_ref_tolerance: parameter RAMs read in the frame's slots, rtl/tmc429_vtarget.v,
+//! rtl/tmc429_accel.v and rtl/tmc429_pram.v in rtl/tmc429_regfile.v) and of x_target (which the target-velocity snapshot selects) executed in
 //! every phase of the 32-cycle frame (C41) while a motor moves: model and RTL agree on every pin
 //! and probe in every cycle. A write takes effect in the edge that executes it (C3), including
 //! the edge of a slot's read of that register and the edge before it, where the RAM's read and
@@ -10,17 +10,19 @@
 use tmc429_model::{Chip, Tmc429};
 use tmc429_testbench::rtl::Expected;
 use tmc429_testbench::signals::Compare;
-use tmc429_testbench::stimulus::{motors, Driver, Frame, Txn};
+use tmc429_testbench::stimulus::{motors, Driver, Frame, PinLevels, Txn};
 use tmc429_testbench::{Rtl, Variant};
 
 const X_TARGET: u8 = 0;
 const V_MIN: u8 = 2;
 const V_MAX: u8 = 3;
 const V_TARGET: u8 = 4;
+const V_ACTUAL: u8 = 5;
 const A_MAX: u8 = 6;
 const PMUL_PDIV: u8 = 9;
 const REF_CONF_RM: u8 = 10;
 const CLK_CONFIG: u8 = 12;
+const DX_REF_TOLERANCE: u8 = 13;
 
 fn w(m: u8, idx: u8, data: u32) -> Txn {
     Txn::Frame(Frame::write(m << 4 | idx, data))
@@ -72,11 +74,16 @@ fn scenario(m: u8, rm: u32, dx: u32, d: u32, late: &[(u8, u32)]) -> Vec<Txn> {
 
 /// Every delay 0..32 before the late writes puts their executing edges in every phase.
 fn sweep(rm: u32, dx: u32, late: &[(u8, u32)]) {
+    sweep_with(&format!("rm {rm}"), |m, d| scenario(m, rm, dx, d, late));
+}
+
+/// `txns(m, d)` for every motor of every variant and every delay `d` in 0..32.
+fn sweep_with(what: &str, txns: impl Fn(u8, u32) -> Vec<Txn>) {
     for chip in Chip::ALL {
         for m in 0..motors(chip) as u8 {
             for d in 0..32 {
-                if let Some(c) = first_disagreement(chip, scenario(m, rm, dx, d, late)) {
-                    panic!("{chip} motor {m}, rm {rm}, delay {d}: model and RTL disagree at cycle {c}");
+                if let Some(c) = first_disagreement(chip, txns(m, d)) {
+                    panic!("{chip} motor {m}, {what}, delay {d}: model and RTL disagree at cycle {c}");
                 }
             }
         }
@@ -96,4 +103,50 @@ fn a_max_written_in_every_phase_velocity_mode() {
 #[test]
 fn parameters_written_in_every_phase_ramp_mode() {
     sweep(0, 5, &[(A_MAX, 300), (V_MAX, 20), (V_MIN, 5), (PMUL_PDIV, 0xC008), (X_TARGET, 3), (X_TARGET, 40)]);
+}
+
+/// RAMP_MODE with the ramp and pulse ticks 2^13 frames apart (none in the run): x_target 1
+/// (away from the target, so that no stop holds V at 0), V written 5·256, then x_target 0 =
+/// x_actual: the stop at the target (x_actual = x_target and |V| >> 8 <= v_min, C52) is
+/// decided by v_min alone. v_min 10 written in every phase stops the motor (V := 0) in the
+/// first condition slot after the write's edge.
+#[test]
+fn v_min_written_in_every_phase_stop_at_target() {
+    sweep_with("v_min", |m, d| {
+        vec![
+            w(m, CLK_CONFIG, 13 << 12 | 13 << 8),
+            w(m, REF_CONF_RM, 0),
+            w(m, X_TARGET, 1),
+            Txn::Idle(100),
+            w(m, V_ACTUAL, 5),
+            w(m, X_TARGET, 0),
+            Txn::Idle(200 + d),
+            w(m, V_MIN, 10),
+            Txn::Idle(400),
+        ]
+    });
+}
+
+/// VELOCITY_MODE toward v_target = -20 with every REF input high (the left switch of every
+/// motor active, C60) and dx_ref_tolerance 100: |x_actual| < 100 masks the switch stop (C61).
+/// dx_ref_tolerance 0 written in every phase stops the motor (V := 0) in the first condition
+/// slot after the write's edge; 100 written again releases it in the first slot after that.
+#[test]
+fn dx_ref_tolerance_written_in_every_phase_switch_stop() {
+    let high = PinLevels { ref_: [true; 3], refr: [false; 3], sdi_s: false };
+    sweep_with("dx_ref_tolerance", |m, d| {
+        let mut t = vec![
+            Txn::Pins { levels: high, hold: 1 },
+            w(m, CLK_CONFIG, 0),
+            w(m, A_MAX, 200),
+            w(m, V_MAX, 600),
+            w(m, DX_REF_TOLERANCE, 100),
+            w(m, REF_CONF_RM, 2),
+            w(m, V_TARGET, 0xFFF & (-20i32 as u32)),
+            Txn::Idle(1000 + d),
+        ];
+        t.extend([(DX_REF_TOLERANCE, 0), (DX_REF_TOLERANCE, 100)].iter().map(|&(idx, data)| w(m, idx, data)));
+        t.push(Txn::Idle(400));
+        t
+    });
 }

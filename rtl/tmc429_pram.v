@@ -1,0 +1,50 @@
+// tmc429_pram: one configuration register of the three motors in block RAM, read for the
+// motor whose slot comes next (docs/model-contract.md C41, C3, C2).
+//
+// A register that the motion core reads in one motor's slot alone needs no flip-flops: the
+// µC writes it into this RAM (one word per motor) and the RAM is read in every edge at the
+// word of the motor m with R(m) <= phase < R(m+1) (R(0) = 0; R1 and R2 are parameters; the
+// phase is prescaler[4:0], which stands still while powered down, so the read goes on at the
+// same word). `val` is the register of that motor as it holds in this cycle: the read of the
+// edge before, or the data of a µC write in that edge to the word read (the read gives the
+// old word then; the datagram's data still holds in the edge after its write, C3), or the
+// reset value RESET while the word was never written (C2). A µC write in this edge is not
+// in `val` (it is the old state's value); `ra` is the word read in this edge, for a user
+// whose own register takes the value after this edge.
+`default_nettype none
+
+module tmc429_pram #(
+    parameter DW = 11,
+    parameter NMOT = 3,               // motors present (TMC4210: 1, whose word alone is read)
+    parameter [4:0] R1 = 5'd0,        // the first phase whose edge reads motor 1's word
+    parameter [4:0] R2 = 5'd0,        // ... motor 2's word
+    parameter [DW-1:0] RESET = {DW{1'b0}}
+) (
+    input  wire          clk,
+    input  wire          rst,
+    input  wire [4:0]    phase,       // prescaler[4:0]
+    input  wire          we,          // a µC write of this register executes in this edge ...
+    input  wire [1:0]    wm,          // ... to this motor ...
+    input  wire [DW-1:0] wd,          // ... with this data, which holds in the edge after
+    output wire [1:0]    ra,          // the word read in this edge
+    output wire [DW-1:0] val          // the register of the word read in the edge before
+);
+    assign ra = (NMOT == 1) ? 2'd0 : ((phase >= R2) ? 2'd2 : ((phase >= R1) ? 2'd1 : 2'd0));
+    wire [DW-1:0] q;
+    wire          wq;
+    tmc429_wram #(.AW(2), .DW(DW), .WMASK(4'b0111)) u_mem (
+        .clk(clk), .rst(rst),
+        .we(we), .waddr(wm), .wdata(wd),
+        .re(1'b1), .raddr(ra), .q(q), .wq(wq));
+    // a write of the word read in that edge: the read is void, the write's data holds
+    reg fw;
+    always @(posedge clk) begin
+        if (rst)
+            fw <= 1'b0;
+        else
+            fw <= we & (wm == ra);
+    end
+    assign val = fw ? wd : (wq ? q : RESET);
+endmodule
+
+`default_nettype wire
