@@ -638,6 +638,7 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
         .arg(root().join("vectors/tb/tb_ramp.v"))
         .arg(root().join("rtl/tmc429_ramp.v"))
         .arg(root().join("rtl/tmc429_accel.v"))
+        .arg(root().join("rtl/tmc429_pram.v"))
         .arg(root().join("rtl/tmc429_wram.v"))
         .output()
         .expect("iverilog (scripts/setup installs it)");

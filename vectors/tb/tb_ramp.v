@@ -1,7 +1,7 @@
 // tb_ramp: replays pin-level vectors of unit `ramp` on tmc429_ramp with the ramp tick's
 // arithmetic tmc429_accel serving it alone, as it serves each motor in its ramp tick
 // (docs/vectors.md).
-//   iverilog -g2005 -I vectors/tb -I rtl -o tb_ramp vectors/tb/tb_ramp.v rtl/tmc429_ramp.v rtl/tmc429_accel.v rtl/tmc429_wram.v
+//   iverilog -g2005 -I vectors/tb -I rtl -o tb_ramp vectors/tb/tb_ramp.v rtl/tmc429_ramp.v rtl/tmc429_accel.v rtl/tmc429_pram.v rtl/tmc429_wram.v
 //   vvp tb_ramp +hex=X.hex +cols=X.cols +meta=X.meta
 // One instance replays the motors of the file one after the other (each motor's lines begin
 // with its reset line). CHIP sets HAS_USTEP as tmc429_motor_regs does (0 on the TMC428) and is
