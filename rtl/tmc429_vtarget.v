@@ -290,7 +290,17 @@ module tmc429_vtarget #(
     wire [27:0] src_l  = a_soft ? acc[28:1] : z_sh[27:0];         // radicand / shift at the load
     wire [23:0] sr_nx  = b_load ? src_l[23:0] : sr[23:0];          // the bits after these four
     wire        st_l   = ~a_soft & (z_sh[39:28] != 12'd0);
-    wire        step   = b_load | (b_k < b_ne);
+    // a step in this cycle: b_load | (b_k < b_ne), a register formed with the next state of
+    // the three (b_ne is loaded at the load, b_load and b_k are decoded from the next phase),
+    // so that the comparison is not in the paths of the steps' enables
+    reg         step;
+    wire [2:0]  b_ne_nx = (run & b_load) ? l_ne : b_ne;
+    always @(posedge clk) begin
+        if (rst)
+            step <= 1'b0;
+        else
+            step <= n_b_load | (n_b_k < b_ne_nx);
+    end
 
     // two square-root steps per cycle; below saturation the root has at most 14 bits. ROOT_SPEC
     // selects how (the root is the same):
