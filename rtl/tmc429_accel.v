@@ -76,7 +76,7 @@ module tmc429_accel #(
     tmc429_pram #(.DW(11), .NMOT(NMOT),
                   .R1(`TMC429_PH_RAMP(1) - 5'd2), .R2(`TMC429_PH_RAMP(2) - 5'd2)) u_amax (
         .clk(clk), .rst(rst), .phase(phase),
-        .we(a_max_we), .wm(a_max_m), .wd(a_max_wd), .ra(am_ra), .val(am_val));
+        .we(a_max_we), .wm(a_max_m), .wd(a_max_wd), .fd(a_max_wd), .ra(am_ra), .val(am_val));
     // the operand is a_max after the operand edge: a write of the word read in this edge holds
     wire        aw_now = a_max_we & (a_max_m == am_ra);
     always @(posedge clk) begin

@@ -7,8 +7,10 @@
 // phase is prescaler[4:0], which stands still while powered down, so the read goes on at the
 // same word). `val` is the register of that motor as it holds in this cycle: the read of the
 // edge before, or the data of a µC write in that edge to the word read (the read gives the
-// old word then; the datagram's data still holds in the edge after its write, C3), or the
-// reset value RESET while the word was never written (C2). A µC write in this edge is not
+// old word then, C3: `fd`, the write data of the edge before; the datagram's data still holds
+// in the edge after its write, so a user may pass wd itself, or a register of a wd that is
+// formed by a carry chain, which then is not in the path from the forwarding into val's
+// users), or the reset value RESET while the word was never written (C2). A µC write in this edge is not
 // in `val` (it is the old state's value); `ra` is the word read in this edge, for a user
 // whose own register takes the value after this edge.
 `default_nettype none
@@ -25,7 +27,8 @@ module tmc429_pram #(
     input  wire [4:0]    phase,       // prescaler[4:0]
     input  wire          we,          // a µC write of this register executes in this edge ...
     input  wire [1:0]    wm,          // ... to this motor ...
-    input  wire [DW-1:0] wd,          // ... with this data, which holds in the edge after
+    input  wire [DW-1:0] wd,          // ... with this data
+    input  wire [DW-1:0] fd,          // wd as it was in the edge before (the forwarded data)
     output wire [1:0]    ra,          // the word read in this edge
     output wire [DW-1:0] val          // the register of the word read in the edge before
 );
@@ -44,7 +47,7 @@ module tmc429_pram #(
         else
             fw <= we & (wm == ra);
     end
-    assign val = fw ? wd : (wq ? q : RESET);
+    assign val = fw ? fd : (wq ? q : RESET);
 endmodule
 
 `default_nettype wire

@@ -295,7 +295,9 @@ module tmc429_regfile #(
     // while powered down. The parameter RAMs are read in every edge at the word of the motor
     // whose commit phase is at most two edges away; the other motors' conditions formed from
     // that value are not applied. The tolerance is stored as dx_ref_tolerance - 1 (-1 for 0,
-    // the reset value), the form of the window's comparison (tmc429_ramp).
+    // the reset value), the form of the window's comparison (tmc429_ramp); the forwarded copy
+    // of a write is that difference registered (the datagram holds, so it is the written one),
+    // so that its carry chain and the window's are not in one path.
     wire [10:0] cond_vmin;
     wire [12:0] cond_tol_m1;
     /* verilator lint_off UNUSEDSIGNAL */   // the word read: for a user taking a write of its edge
@@ -303,14 +305,22 @@ module tmc429_regfile #(
     /* verilator lint_on UNUSEDSIGNAL */
     localparam [4:0] RC1 = `TMC429_PH_COMMIT(1) - 5'd2;
     localparam [4:0] RC2 = `TMC429_PH_COMMIT(2) - 5'd2;
+    wire [12:0] tol_wd = {1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]} - 13'd1;
+    reg  [12:0] tol_fd;
+    always @(posedge clk) begin
+        if (rst)
+            tol_fd <= 13'h1FFF;
+        else
+            tol_fd <= tol_wd;
+    end
     tmc429_pram #(.DW(11), .NMOT(NMOT), .R1(RC1), .R2(RC2)) u_vmin (
         .clk(clk), .rst(rst), .phase(ph),
         .we(wr_mot & (jdx == `TMC429_IDX_V_MIN)), .wm(a7[`TMC429_A7_SMDA]),
-        .wd(wdata[`TMC429_F_V_MIN]), .ra(cond_ra_v), .val(cond_vmin));
+        .wd(wdata[`TMC429_F_V_MIN]), .fd(wdata[`TMC429_F_V_MIN]), .ra(cond_ra_v), .val(cond_vmin));
     tmc429_pram #(.DW(13), .NMOT(NMOT), .R1(RC1), .R2(RC2), .RESET(13'h1FFF)) u_tol (
         .clk(clk), .rst(rst), .phase(ph),
         .we(wr_mot & (jdx == `TMC429_IDX_DX_REF_TOLERANCE)), .wm(a7[`TMC429_A7_SMDA]),
-        .wd({1'b0, wdata[`TMC429_F_DX_REF_TOLERANCE]} - 13'd1), .ra(cond_ra_t), .val(cond_tol_m1));
+        .wd(tol_wd), .fd(tol_fd), .ra(cond_ra_t), .val(cond_tol_m1));
 
     // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
     // C51): its operands are registered in the edge into a motor's ramp phase
