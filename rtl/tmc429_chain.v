@@ -106,11 +106,14 @@ module tmc429_chain (
     wire [9:0] nx_gap = (wd <= 8'd7) ? nx_p : ({1'b0, nx_lo} + {nx_lo, 1'b0});
     reg  [8:0] t_lo, t_hi;
     reg  [9:0] t_p, t_gap;
+    reg        g_lo, g_hi, g_p, g_gap;  // each of the four > 1 (the counter's cnt_gt1 on a load)
     always @(posedge clk) begin
         if (rst) begin
             t_lo <= 9'd16;  t_hi <= 9'd16;  t_p <= 10'd32;  t_gap <= 10'd48;   // clk2_div 15
+            g_lo <= 1'b1;   g_hi <= 1'b1;   g_p <= 1'b1;    g_gap <= 1'b1;
         end else if (clk2_div_we) begin
             t_lo <= nx_lo;  t_hi <= nx_hi;  t_p <= nx_p;  t_gap <= nx_gap;
+            g_lo <= |nx_lo[8:1];  g_hi <= |nx_hi[8:1];  g_p <= |nx_p[9:1];  g_gap <= |nx_gap[9:1];
         end
     end
 
@@ -135,11 +138,13 @@ module tmc429_chain (
     // can_start = (state == IDLE) | (CSOFF with cnt <= 1): a datagram may start in this edge.
     // A register formed with the next state (HOLD enters CSOFF with cnt = P >= 16), so that
     // `start` is request AND a flip-flop.
-    // The counter's comparisons with constants are bit tests (cnt > 1: a bit above bit 0 set;
-    // cnt <= 2: none above bit 1 and not 3), LUTs only: written as `>` and `<=`, synthesis
-    // (Yosys' synth_ice40) builds each as a carry chain, which lay on the path from the
-    // counter through the chip select's next state into the nSCS_S pin register.
-    wire       cnt_gt1 = |cnt[9:1];
+    // The counter's comparisons with constants are bit tests (cnt <= 2: none above bit 1 and
+    // not 3), LUTs only: written as `>` and `<=`, synthesis (Yosys' synth_ice40) builds each
+    // as a carry chain, which lay on the path from the counter through the chip select's next
+    // state into the nSCS_S pin register. cnt > 1 is a register formed with the counter's next
+    // state (a count down from cnt: cnt > 2; a load: the loaded value's, registered with the
+    // SCK_S timing), so that the OR of nine bits is not in front of every next state.
+    reg        cnt_gt1, gt1_n;          // = |cnt[9:1]
     wire       cnt_le2 = ~|cnt[9:2] & ~&cnt[1:0];
     reg        can_start;
     wire       can_start_n = ~run ? can_start
@@ -201,7 +206,7 @@ module tmc429_chain (
 
     // ---- next state -------------------------------------------------------------------------
     always @(*) begin
-        state_n = state;  cnt_n = cnt;  cidx_n = cidx;  motor_ns = motor;  bits_n = bits;
+        state_n = state;  cnt_n = cnt;  gt1_n = cnt_gt1;  cidx_n = cidx;  motor_ns = motor;  bits_n = bits;
         req_n = req;  stepped_n = stepped;  nxm_n = nxm;
         cover_busy_n = cover_busy;  dgw_busy_n = dgw_busy;  readback_n = readback;
         cs_ns = cs;  sck_ns = sck;  sdo_n = sdo;
@@ -211,7 +216,7 @@ module tmc429_chain (
                 if (state != IDLE || cs || req || stepped != 3'd0) begin
                     // C89: leaving SPI mode aborts; taken flags return to waiting
                     ret_cw = cover_busy;   ret_dgw = dgw_busy;
-                    state_n = IDLE;  cnt_n = 10'd0;  cidx_n = 6'd0;  motor_ns = 2'd0;  bits_n = 7'd0;
+                    state_n = IDLE;  cnt_n = 10'd0;  gt1_n = 1'b0;  cidx_n = 6'd0;  motor_ns = 2'd0;  bits_n = 7'd0;
                     req_n = 1'b0;  stepped_n = 3'd0;  nxm_n = 1'b0;
                     cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
                     cs_ns = 1'b0;  sck_ns = 1'b1;  sdo_n = 1'b1;
@@ -221,13 +226,13 @@ module tmc429_chain (
                 if (state == IDLE) begin
                     // waiting for a request (start)
                 end else if (cnt_gt1) begin
-                    cnt_n = cnt - 10'd1;
+                    cnt_n = cnt - 10'd1;  gt1_n = ~cnt_le2;
                 end else begin
                     case (state)
                     SETUP, GAP: begin
                         // falling SCK_S: the bit goes out (C84, C85)
                         sdo_n = bit_now;  nxm_n = cfg[5];  sck_ns = 1'b0;
-                        state_n = LOW;  cnt_n = {1'b0, t_lo};
+                        state_n = LOW;  cnt_n = {1'b0, t_lo};  gt1_n = g_lo;
                     end
                     LOW: begin
                         // rising SCK_S: SDI_S into the readback (C87)
@@ -235,27 +240,27 @@ module tmc429_chain (
                         readback_n = {readback[46:0], sdi_s};
                         if (bits != 7'd127)
                             bits_n = bits + 7'd1;
-                        state_n = HIGH;  cnt_n = {1'b0, t_hi};
+                        state_n = HIGH;  cnt_n = {1'b0, t_hi};  gt1_n = g_hi;
                     end
                     HIGH: begin
                         if (nxm) begin
                             if (motor >= lsmd_e) begin
-                                state_n = HOLD;  cnt_n = {1'b0, t_hi};
+                                state_n = HOLD;  cnt_n = {1'b0, t_hi};  gt1_n = g_hi;
                             end else begin
                                 motor_ns = motor + 2'd1;  cidx_n = cidx + 6'd1;
-                                state_n = GAP;  cnt_n = t_gap;  shift = 1'b1;
+                                state_n = GAP;  cnt_n = t_gap;  gt1_n = g_gap;  shift = 1'b1;
                             end
                         end else begin
                             cidx_n = cidx + 6'd1;
                             sdo_n = bit_now;  nxm_n = cfg[5];  sck_ns = 1'b0;
-                            state_n = LOW;  cnt_n = {1'b0, t_lo};
+                            state_n = LOW;  cnt_n = {1'b0, t_lo};  gt1_n = g_lo;
                         end
                     end
                     HOLD: begin
                         // end of the datagram: CS inactive, SDO_S back high (C81), CDGW
                         // handshake done (C87, C88)
                         cs_ns = 1'b0;  sdo_n = 1'b1;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
-                        state_n = CSOFF;  cnt_n = t_p;
+                        state_n = CSOFF;  cnt_n = t_p;  gt1_n = g_p;
                     end
                     default: begin
                         // CSOFF over: the next datagram starts at once if one is requested
@@ -268,7 +273,7 @@ module tmc429_chain (
                     cover_busy_n = cw;  dgw_busy_n = dgw;
                     req_n = 1'b0;  stepped_n = 3'd0;
                     cidx_n = 6'd0;  bits_n = 7'd0;
-                    state_n = SETUP;  cnt_n = {1'b0, t_hi};
+                    state_n = SETUP;  cnt_n = {1'b0, t_hi};  gt1_n = g_hi;
                 end else begin
                     req_n = request;
                     stepped_n = stepped | step;
@@ -288,7 +293,7 @@ module tmc429_chain (
 
     always @(posedge clk) begin
         if (rst) begin
-            state <= IDLE;  cnt <= 10'd0;  cidx <= 6'd0;  motor <= 2'd0;  bits <= 7'd0;
+            state <= IDLE;  cnt <= 10'd0;  cnt_gt1 <= 1'b0;  cidx <= 6'd0;  motor <= 2'd0;  bits <= 7'd0;
             can_start <= 1'b1;
             req <= 1'b0;  stepped <= 3'd0;  nxm <= 1'b0;
             cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
@@ -296,7 +301,7 @@ module tmc429_chain (
             cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;  cupd_top <= 3'd0;
             ramp_tick <= 3'd0;  cont_update <= 1'b0;  wrap <= 1'b0;
         end else begin
-            state <= state_n;  cnt <= cnt_n;  cidx <= cidx_n;  motor <= motor_n;
+            state <= state_n;  cnt <= cnt_n;  cnt_gt1 <= gt1_n;  cidx <= cidx_n;  motor <= motor_n;
             can_start <= can_start_n;
             bits <= bits_n;  req <= req_n;  stepped <= stepped_n;  nxm <= nxm_n;
             cover_busy <= cover_busy_n;  dgw_busy <= dgw_busy_n;  readback <= readback_n;
