@@ -106,14 +106,17 @@ module tmc429_chain (
     wire [9:0] nx_gap = (wd <= 8'd7) ? nx_p : ({1'b0, nx_lo} + {nx_lo, 1'b0});
     reg  [8:0] t_lo, t_hi;
     reg  [9:0] t_p, t_gap;
-    reg        g_lo, g_hi, g_p, g_gap;  // each of the four > 1 (the counter's cnt_gt1 on a load)
+    // the counter's cnt > 1 after a load: t_hi >= 8 (clk2_div >= 7: clk2_div + 1, else
+    // 15 - clk2_div), t_p = t_lo + t_hi >= 9 and t_gap >= t_p are always above 1; t_lo =
+    // clk2_div + 1 is 1 for clk2_div = 0
+    reg        g_lo;                    // t_lo > 1
     always @(posedge clk) begin
         if (rst) begin
             t_lo <= 9'd16;  t_hi <= 9'd16;  t_p <= 10'd32;  t_gap <= 10'd48;   // clk2_div 15
-            g_lo <= 1'b1;   g_hi <= 1'b1;   g_p <= 1'b1;    g_gap <= 1'b1;
+            g_lo <= 1'b1;
         end else if (clk2_div_we) begin
             t_lo <= nx_lo;  t_hi <= nx_hi;  t_p <= nx_p;  t_gap <= nx_gap;
-            g_lo <= |nx_lo[8:1];  g_hi <= |nx_hi[8:1];  g_p <= |nx_p[9:1];  g_gap <= |nx_gap[9:1];
+            g_lo <= wd != 8'd0;
         end
     end
 
@@ -142,8 +145,9 @@ module tmc429_chain (
     // not 3), LUTs only: written as `>` and `<=`, synthesis (Yosys' synth_ice40) builds each
     // as a carry chain, which lay on the path from the counter through the chip select's next
     // state into the nSCS_S pin register. cnt > 1 is a register formed with the counter's next
-    // state (a count down from cnt: cnt > 2; a load: the loaded value's, registered with the
-    // SCK_S timing), so that the OR of nine bits is not in front of every next state.
+    // state (a count down from cnt: cnt > 2; a load: the loaded value's, 1 but for t_lo,
+    // whose is registered with it), so that the OR of nine bits is not in front of every next
+    // state.
     reg        cnt_gt1, gt1_n;          // = |cnt[9:1]
     wire       cnt_le2 = ~|cnt[9:2] & ~&cnt[1:0];
     reg        can_start;
@@ -240,15 +244,15 @@ module tmc429_chain (
                         readback_n = {readback[46:0], sdi_s};
                         if (bits != 7'd127)
                             bits_n = bits + 7'd1;
-                        state_n = HIGH;  cnt_n = {1'b0, t_hi};  gt1_n = g_hi;
+                        state_n = HIGH;  cnt_n = {1'b0, t_hi};  gt1_n = 1'b1;
                     end
                     HIGH: begin
                         if (nxm) begin
                             if (motor >= lsmd_e) begin
-                                state_n = HOLD;  cnt_n = {1'b0, t_hi};  gt1_n = g_hi;
+                                state_n = HOLD;  cnt_n = {1'b0, t_hi};  gt1_n = 1'b1;
                             end else begin
                                 motor_ns = motor + 2'd1;  cidx_n = cidx + 6'd1;
-                                state_n = GAP;  cnt_n = t_gap;  gt1_n = g_gap;  shift = 1'b1;
+                                state_n = GAP;  cnt_n = t_gap;  gt1_n = 1'b1;  shift = 1'b1;
                             end
                         end else begin
                             cidx_n = cidx + 6'd1;
@@ -260,7 +264,7 @@ module tmc429_chain (
                         // end of the datagram: CS inactive, SDO_S back high (C81), CDGW
                         // handshake done (C87, C88)
                         cs_ns = 1'b0;  sdo_n = 1'b1;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
-                        state_n = CSOFF;  cnt_n = t_p;  gt1_n = g_p;
+                        state_n = CSOFF;  cnt_n = t_p;  gt1_n = 1'b1;
                     end
                     default: begin
                         // CSOFF over: the next datagram starts at once if one is requested
@@ -273,7 +277,7 @@ module tmc429_chain (
                     cover_busy_n = cw;  dgw_busy_n = dgw;
                     req_n = 1'b0;  stepped_n = 3'd0;
                     cidx_n = 6'd0;  bits_n = 7'd0;
-                    state_n = SETUP;  cnt_n = {1'b0, t_hi};  gt1_n = g_hi;
+                    state_n = SETUP;  cnt_n = {1'b0, t_hi};  gt1_n = 1'b1;
                 end else begin
                     req_n = request;
                     stepped_n = stepped | step;
