@@ -290,23 +290,16 @@ module tmc429_vtarget #(
     wire [27:0] src_l  = a_soft ? acc[28:1] : z_sh[27:0];         // radicand / shift at the load
     wire [23:0] sr_nx  = b_load ? src_l[23:0] : sr[23:0];          // the bits after these four
     wire        st_l   = ~a_soft & (z_sh[39:28] != 12'd0);
-    // a step in this cycle: b_load | (b_k < b_ne) inside B (outside B no step is taken, the
-    // flag is not used), a register formed with the next state: the motors' B windows follow
-    // one another (k = 0 .. 6, the load at k = 0), so after an edge with run the next cycle is
-    // a load, or k + 1 < b_ne of the same window (b_ne of the load when this cycle loads), and
-    // without run everything stands still. Written as bit logic of registers, so that neither
-    // the next phase's sum nor a comparison's carry chain is in front of it
+    // a step in this cycle: b_load | (b_k < b_ne), a register formed with the next state of
+    // the three (b_ne is loaded at the load, b_load and b_k are decoded from the next phase),
+    // so that the comparison is not in the paths of the steps' enables
     reg         step;
-    wire [2:0]  s_ne  = b_load ? l_ne : b_ne;
-    wire [2:0]  s_k1  = b_k + 3'd1;     // b_k <= 5 where it is used
-    wire        s_lt  = (~s_k1[2] & s_ne[2])
-                      | (~(s_k1[2] ^ s_ne[2]) & ((~s_k1[1] & s_ne[1])
-                                                | (~(s_k1[1] ^ s_ne[1]) & ~s_k1[0] & s_ne[0])));
+    wire [2:0]  b_ne_nx = (run & b_load) ? l_ne : b_ne;
     always @(posedge clk) begin
         if (rst)
             step <= 1'b0;
-        else if (run)
-            step <= n_b_load | (b_run & (b_k != 3'd6) & s_lt);
+        else
+            step <= n_b_load | (n_b_k < b_ne_nx);
     end
 
     // two square-root steps per cycle; below saturation the root has at most 14 bits. ROOT_SPEC
