@@ -6,13 +6,13 @@
 // word of the motor m with R(m) <= phase < R(m+1) (R(0) = 0; R1 and R2 are parameters; the
 // phase is prescaler[4:0], which stands still while powered down, so the read goes on at the
 // same word). `val` is the register of that motor as it holds in this cycle: the read of the
-// edge before, or the data of a µC write in that edge to the word read (the read gives the
-// old word then, C3: `fd`, the write data of the edge before; the datagram's data still holds
-// in the edge after its write, so a user may pass wd itself, or a register of a wd that is
-// formed by a carry chain, which then is not in the path from the forwarding into val's
-// users), or the reset value RESET while the word was never written (C2). A µC write in this edge is not
-// in `val` (it is the old state's value); `ra` is the word read in this edge, for a user
-// whose own register takes the value after this edge.
+// edge before; or, when the µC wrote the word read in that edge (the read gives the old word
+// then, C3), `fd`, the write data of the edge before (the datagram's data still holds in the
+// edge after its write, so a user may pass wd itself, or a register of a wd formed by a carry
+// chain, which then is not in the path from the forwarding into val's users); or the reset
+// value RESET while the word was never written (C2). A µC write in this edge is not in `val`
+// (it is the old state's value); `ra` is the word read in this edge, for a user whose own
+// register takes the value after this edge.
 `default_nettype none
 
 module tmc429_pram #(
