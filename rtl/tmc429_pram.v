@@ -12,7 +12,8 @@
 // chain, which then is not in the path from the forwarding into val's users); or the reset
 // value RESET while the word was never written (C2). A µC write in this edge is not in `val`
 // (it is the old state's value); `ra` is the word read in this edge, for a user whose own
-// register takes the value after this edge.
+// register takes the value after this edge. With one motor (NMOT = 1, the TMC4210) the word is
+// a flip-flop register loaded by the write: the same `val`, with less logic than RAM and forwarding.
 `default_nettype none
 
 module tmc429_pram #(
@@ -24,30 +25,48 @@ module tmc429_pram #(
 ) (
     input  wire          clk,
     input  wire          rst,
+    /* verilator lint_off UNUSEDSIGNAL */   // NMOT = 1: one word, no read address
     input  wire [4:0]    phase,       // prescaler[4:0]
     input  wire          we,          // a µC write of this register executes in this edge ...
     input  wire [1:0]    wm,          // ... to this motor ...
     input  wire [DW-1:0] wd,          // ... with this data
     input  wire [DW-1:0] fd,          // wd as it was in the edge before (the forwarded data)
+    /* verilator lint_on UNUSEDSIGNAL */
     output wire [1:0]    ra,          // the word read in this edge
     output wire [DW-1:0] val          // the register of the word read in the edge before
 );
-    assign ra = (NMOT == 1) ? 2'd0 : ((phase >= R2) ? 2'd2 : ((phase >= R1) ? 2'd1 : 2'd0));
-    wire [DW-1:0] q;
-    wire          wq;
-    tmc429_wram #(.AW(2), .DW(DW), .WMASK(4'b0111)) u_mem (
-        .clk(clk), .rst(rst),
-        .we(we), .waddr(wm), .wdata(wd),
-        .re(1'b1), .raddr(ra), .q(q), .wq(wq));
-    // a write of the word read in that edge: the read is void, the write's data holds
-    reg fw;
-    always @(posedge clk) begin
-        if (rst)
-            fw <= 1'b0;
-        else
-            fw <= we & (wm == ra);
-    end
-    assign val = fw ? fd : (wq ? q : RESET);
+    generate
+        if (NMOT == 1) begin : one
+            // one motor: its word is a flip-flop register (the RAM and the forwarding would
+            // cost more logic than the DW flip-flops they replace); fd is not needed
+            reg [DW-1:0] r;
+            always @(posedge clk) begin
+                if (rst)
+                    r <= RESET;
+                else if (we)
+                    r <= wd;
+            end
+            assign ra  = 2'd0;
+            assign val = r;
+        end else begin : three
+            assign ra = (phase >= R2) ? 2'd2 : ((phase >= R1) ? 2'd1 : 2'd0);
+            wire [DW-1:0] q;
+            wire          wq;
+            tmc429_wram #(.AW(2), .DW(DW), .WMASK(4'b0111)) u_mem (
+                .clk(clk), .rst(rst),
+                .we(we), .waddr(wm), .wdata(wd),
+                .re(1'b1), .raddr(ra), .q(q), .wq(wq));
+            // a write of the word read in that edge: the read is void, the write's data holds
+            reg fw;
+            always @(posedge clk) begin
+                if (rst)
+                    fw <= 1'b0;
+                else
+                    fw <= we & (wm == ra);
+            end
+            assign val = fw ? fd : (wq ? q : RESET);
+        end
+    endgenerate
 endmodule
 
 `default_nettype wire
