@@ -80,17 +80,21 @@ module tmc429_accel #(
         .we(a_max_we), .wm(a_max_m), .wd(a_max_wd), .fd(a_max_wd), .ra(am_ra), .val(am_val));
     // the operand is a_max after the operand edge: a write of the word read in this edge holds
     wire        aw_now = a_max_we & (a_max_m == am_ra);
-    wire [10:0] as_n   = aw_now ? a_max_wd : am_val;
     // T + a_max and T - a_max are formed with the operands (T and a_max do not depend on V),
-    // so that each of the tick's sign tests below is one carry chain from flip-flops
+    // so that each of the tick's sign tests below is one carry chain from flip-flops; both
+    // for the RAM's value and for the write data, so that the write's decode (aw_now)
+    // selects after the carry chains
     wire [20:0] tw_n   = {th_n[11], th_n, 8'd0};
+    wire [20:0] tpa_r  = tw_n + {10'd0, am_val},    tma_r = tw_n - {10'd0, am_val};
+    wire [20:0] tpa_w  = tw_n + {10'd0, a_max_wd},  tma_w = tw_n - {10'd0, a_max_wd};
     reg  [20:0] tpa, tma;
     always @(posedge clk) begin
         if (rst) begin
             vs <= 20'd0;  t_hi <= 12'd0;  as <= 11'd0;  tpa <= 21'd0;  tma <= 21'd0;
         end else if (|ld[NMOT-1:0]) begin
-            vs <= vs_n;  t_hi <= th_n;  as <= as_n;
-            tpa <= tw_n + {10'd0, as_n};  tma <= tw_n - {10'd0, as_n};
+            vs <= vs_n;  t_hi <= th_n;  as <= aw_now ? a_max_wd : am_val;
+            tpa <= aw_now ? tpa_w : tpa_r;
+            tma <= aw_now ? tma_w : tma_r;
         end
     end
 
