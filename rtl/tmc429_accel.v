@@ -8,9 +8,8 @@
 // registered soft stop action (set only in the motor's condition slot, phase 7m + 14, the
 // edge before that one), a_max with a µC write of that edge, and the committed target
 // vt (committed at phase 7m + 14, stable in that edge); T is registered with the soft stop
-// applied, and T + a_max and T - a_max are registered beside them. So the tick's arithmetic
-// starts at flip-flops and crosses one carry chain; the motor's tmc429_ramp loads the results in
-// its ramp tick:
+// applied. So the tick's arithmetic starts at flip-flops; the motor's tmc429_ramp loads the
+// results in its ramp tick:
 //   T = 256 vt, or 0 while stop_soft; V moves toward T by at most a_max and lands on T when
 //   |T - V| <= a_max; a_rmp = the change of V; mc_rmp = the new V's v_mc (tmc429_ramp).
 // Range: |V|, |T| <= 2047*256, a_max <= 2047. V - T and V + a_max - T >= -2*2047*256 fit in
@@ -80,36 +79,25 @@ module tmc429_accel #(
         .we(a_max_we), .wm(a_max_m), .wd(a_max_wd), .fd(a_max_wd), .ra(am_ra), .val(am_val));
     // the operand is a_max after the operand edge: a write of the word read in this edge holds
     wire        aw_now = a_max_we & (a_max_m == am_ra);
-    // T + a_max and T - a_max are formed with the operands (T and a_max do not depend on V),
-    // so that each of the tick's sign tests below is one carry chain from flip-flops; both
-    // for the RAM's value and for the write data, so that the write's decode (aw_now)
-    // selects after the carry chains
-    wire [20:0] tw_n   = {th_n[11], th_n, 8'd0};
-    wire [20:0] tpa_r  = tw_n + {10'd0, am_val},    tma_r = tw_n - {10'd0, am_val};
-    wire [20:0] tpa_w  = tw_n + {10'd0, a_max_wd},  tma_w = tw_n - {10'd0, a_max_wd};
-    reg  [20:0] tpa, tma;
     always @(posedge clk) begin
         if (rst) begin
-            vs <= 20'd0;  t_hi <= 12'd0;  as <= 11'd0;  tpa <= 21'd0;  tma <= 21'd0;
+            vs <= 20'd0;  t_hi <= 12'd0;  as <= 11'd0;
         end else if (|ld[NMOT-1:0]) begin
             vs <= vs_n;  t_hi <= th_n;  as <= aw_now ? a_max_wd : am_val;
-            tpa <= aw_now ? tpa_w : tpa_r;
-            tma <= aw_now ? tma_w : tma_r;
         end
     end
 
     // ---- V toward T (C51) -------------------------------------------------------------------
-    // up = V < T; lands on T when V + a_max - T >= 0 and T + a_max - V >= 0: the sums
-    // V - (T - a_max) and (T + a_max) - V (21 bits, the operand registers tma and tpa), each one
-    // sign test; else V +- a_max.
+    // up = V < T; lands on T when V + a_max - T >= 0 and T + a_max - V >= 0: the step sums
+    // V +- a_max (21 bits, no wrap-around) minus / from T, each one sign test; else V +- a_max.
     wire [20:0] t_w   = {t_hi[11], t_hi, 8'd0};
     wire [20:0] v_w   = {vs[19], vs};
     wire [19:0] v_up  = vs + {9'd0, as};       // used only short of T: within +-2047*256
     wire [19:0] v_dn  = vs - {9'd0, as};
     /* verilator lint_off UNUSEDSIGNAL */     // only the signs are used
     wire [20:0] s_vt  = v_w - t_w;                                      // V - T
-    wire [20:0] s_lo  = v_w - tma;                                      // V + a_max - T
-    wire [20:0] s_hi  = tpa - v_w;                                      // T + a_max - V
+    wire [20:0] s_lo  = v_w + {10'd0, as} - t_w;                        // V + a_max - T
+    wire [20:0] s_hi  = t_w + {10'd0, as} - v_w;                        // T + a_max - V
     /* verilator lint_on UNUSEDSIGNAL */
     wire        up    = s_vt[20];
     wire        land  = ~s_lo[20] & ~s_hi[20];
