@@ -332,7 +332,7 @@ module tmc429_regfile #(
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
 
     // ---- target velocity (C41, C50) -------------------------------------------------------
-    tmc429_vtarget #(.NMOT(NMOT), .ROOT_SPEC(NMOT == 1)) u_vt (
+    tmc429_vtarget #(.NMOT(NMOT), .ROOT_SPEC(0)) u_vt (
         .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
         .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
         .v_target(p_v_target), .brake_en(m_brake_en),
