@@ -7,16 +7,26 @@ use std::process::Command;
 /// Compiles the test bench `bench` (its `NVEC` replaced by the number of `lines`) with
 /// `rtl/<module>.v`, runs it on `lines` as `vectors.hex` in a scratch directory and returns what
 /// it printed.
+#[allow(dead_code)] // each test crate uses one of the two
 pub fn icarus_unit(module: &str, bench: &str, lines: &[String]) -> String {
-    let dir = std::env::temp_dir().join(format!("tmc429-{module}-{}", std::process::id()));
+    icarus_modules(&[module], bench, lines)
+}
+
+/// As [`icarus_unit`], with the modules `rtl/<module>.v` of `modules` (the first names the
+/// scratch directory) and `rtl/` as the include path of the register map and frame schedule.
+#[allow(dead_code)]
+pub fn icarus_modules(modules: &[&str], bench: &str, lines: &[String]) -> String {
+    let dir = std::env::temp_dir().join(format!("tmc429-{}-{}", modules[0], std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let hex: String = lines.iter().map(|l| format!("{l}\n")).collect();
     std::fs::write(dir.join("vectors.hex"), hex).unwrap();
     std::fs::write(dir.join("tb.v"), bench.replace("NVEC", &lines.len().to_string())).unwrap();
-    let rtl = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../rtl/{module}.v"));
+    let rtl = Path::new(env!("CARGO_MANIFEST_DIR")).join("../rtl");
     let st = Command::new("iverilog")
-        .args(["-g2005", "-Wall", "-o", "sim", "tb.v"])
-        .arg(&rtl)
+        .args(["-g2005", "-Wall", "-o", "sim"])
+        .arg(format!("-I{}", rtl.display()))
+        .arg("tb.v")
+        .args(modules.iter().map(|m| rtl.join(format!("{m}.v"))))
         .current_dir(&dir)
         .status()
         .expect("iverilog (scripts/setup installs it)");
