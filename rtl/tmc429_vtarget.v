@@ -41,9 +41,9 @@
 
 module tmc429_vtarget #(
     parameter NMOT = 3,           // motors present (TMC4210: 1)
-    // square root steps: 0 two non-restoring steps per cycle (two carry chains, one XOR
-    // between them); 1 three restoring differences side by side and a register 3y + 1 (one
-    // carry chain in the cycle, about 150 logic cells more); the root is the same
+    // square root steps: 0 two non-restoring steps per cycle (two carry chains, one XOR between
+    // them; every variant); 1 three restoring differences side by side and a register 3y + 1 (one
+    // carry chain per cycle, ~100 logic cells more); the same root (testbench/tests/rtl_root_forms.rs)
     parameter ROOT_SPEC = 0
 ) (
     input  wire        clk,
