@@ -53,18 +53,8 @@ fn stream(seed: u64) -> Vec<String> {
     key[..8].copy_from_slice(&seed.to_le_bytes());
     let mut runner = TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &key));
     let mut draw = |n: u32| (0..n).new_tree(&mut runner).unwrap().current();
-    let mut e = Edge {
-        run: true,
-        rm: [0; 3],
-        x_target: [0; 3],
-        x_actual: [0; 3],
-        v_target: [0; 3],
-        brake_en: 0,
-        we: false,
-        m: 0,
-        sel: 0,
-        data: 0,
-    };
+    let mut e =
+        Edge { run: true, rm: [0; 3], x_target: [0; 3], x_actual: [0; 3], v_target: [0; 3], brake_en: 0, we: false, m: 0, sel: 0, data: 0 };
     let mut out = Vec::with_capacity(CYCLES);
     for _ in 0..CYCLES {
         if e.run {
