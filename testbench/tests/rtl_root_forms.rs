@@ -8,9 +8,6 @@
 
 mod common;
 
-use proptest::strategy::{Strategy, ValueTree};
-use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
-
 const CYCLES: usize = 300_000;
 
 /// The inputs of one edge, as the bench's 224-bit line (nibble-aligned fields, see BENCH).
@@ -49,10 +46,7 @@ impl Edge {
 }
 
 fn stream(seed: u64) -> Vec<String> {
-    let mut key = [0u8; 32];
-    key[..8].copy_from_slice(&seed.to_le_bytes());
-    let mut runner = TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &key));
-    let mut draw = |n: u32| (0..n).new_tree(&mut runner).unwrap().current();
+    let mut draw = common::draws(seed);
     let mut e =
         Edge { run: true, rm: [0; 3], x_target: [0; 3], x_actual: [0; 3], v_target: [0; 3], brake_en: 0, we: false, m: 0, sel: 0, data: 0 };
     let mut out = Vec::with_capacity(CYCLES);

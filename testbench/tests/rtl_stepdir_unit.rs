@@ -7,8 +7,6 @@
 
 mod common;
 
-use proptest::strategy::{Strategy, ValueTree};
-use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use tmc429_model::motor::Motor;
 use tmc429_model::stepdir::StepDir;
 
@@ -42,10 +40,7 @@ impl Vector {
 }
 
 fn vectors(seed: u64) -> Vec<Vector> {
-    let mut key = [0u8; 32];
-    key[..8].copy_from_slice(&seed.to_le_bytes());
-    let mut runner = TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &key));
-    let mut draw = |n: u32| (0..n).new_tree(&mut runner).unwrap().current();
+    let mut draw = common::draws(seed);
     let mut sd = StepDir::reset();
     let mut motors = [Motor::reset(); 3];
     let mut now = 0u64;
