@@ -3,7 +3,8 @@
 //! on a placement it cannot route, so a run past its time is stopped, its seed's entry says so,
 //! and no bitstream is left behind; those tests synthesize the TMC4210 (Yosys, about 20 s) and
 //! give nextpnr one second, far less than its placement takes. `scripts/fpga --until-met` places
-//! the seeds in order and stops at the first placement that meets the CLK.
+//! the seeds in order and stops at the first placement that meets the CLK; `scripts/rtl-report`
+//! ends with the worst path of each placement it lists (one TMC4210 placement, under a minute).
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -88,5 +89,28 @@ fn fpga_until_met_stops_at_the_first_placement_that_meets_the_clk() {
     assert_eq!(placed.iter().map(|&(s, _)| s).collect::<Vec<_>>(), (1..=last).collect::<Vec<_>>(), "{line}");
     assert!(line.contains(&format!("seed {last}: meets 32 MHz")), "{line}");
     assert!(out.join("icebreaker-tmc4210.bin").exists(), "the bitstream of the placement that meets");
+    std::fs::remove_dir_all(&out).ok();
+}
+
+#[test]
+fn rtl_report_prints_the_worst_path_of_each_placement_it_lists() {
+    let out = scratch("rtl-report-paths");
+    let o = script("rtl-report", &["--flow", "plain", "--chip", "tmc4210", "--seeds", "1", "--out", out.to_str().unwrap()]);
+    let stdout = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "stdout:\n{stdout}\nstderr:\n{}", text(&o.stderr));
+    // the table's line: "plain    TMC4210 ... 1: F; F, F" (one seed: best and worst are it)
+    let line = stdout.lines().find(|l| l.starts_with("plain ") && l.contains("TMC4210")).expect("the TMC4210's line");
+    let mhz = line.rsplit(", ").next().unwrap().trim();
+    let lines: Vec<&str> = stdout.lines().collect();
+    let head = lines
+        .iter()
+        .position(|l| *l == "The worst path of each placement (scripts/pnr-paths on the place-and-route logs, which --out keeps):")
+        .expect("the paths' section");
+    // the entry of the log the run kept, with the Fmax of the table, and its two registers
+    assert!(lines[head + 1].starts_with(&format!("plain-tmc4210.seed1.nextpnr.log: {mhz} MHz; worst path ")), "{stdout}");
+    assert!(lines[head + 2].starts_with("  from u_top."), "{stdout}");
+    assert!(lines[head + 3].starts_with("  to   u_top."), "{stdout}");
+    assert_eq!(lines.len(), head + 4, "{stdout}");
+    assert!(out.join("plain-tmc4210.seed1.nextpnr.log").exists());
     std::fs::remove_dir_all(&out).ok();
 }
