@@ -5,9 +5,11 @@
 //
 // Executes the 32-bit datagram `cmd` when `exec` pulses (C12), serves the read port of the
 // SPI slave (data of the old state), builds the status byte, the interrupt output, the
-// position compare and the power-down state. Holds the pre-divider counter and the frame
-// schedule (C40, C41): the shared target velocity unit (tmc429_vtarget) and, per motor, the
-// registers with the ramp and pulse generator (tmc429_motor_regs, tmc429_ramp). Per CHIP
+// position compare and the power-down state. Holds the shared target velocity unit
+// (tmc429_vtarget), the ramp tick's arithmetic (tmc429_accel) and, per motor, the registers with
+// the ramp and pulse generator (tmc429_motor_regs, tmc429_ramp), which act in the slots of the
+// frame schedule (tmc429_schedule: its phase and ticks come in, the dividers and the writes of
+// clk_config go out). Per CHIP
 // (0 TMC428, 1 TMC429, 2 TMC4210) the registers a variant lacks read 0 and ignore writes (C21).
 // Register indices, fields and presence per variant: rtl/tmc429_regmap.vh.
 `default_nettype none
@@ -36,7 +38,19 @@ module tmc429_regfile #(
     output wire        sdo_int,       // if_configuration sdo_int (TMC429/TMC4210)
     output reg         poscmp_q,      // position compare match, registered (C65)
     output reg         pd,            // powered down
-    output reg  [19:0] prescaler,     // free-running CLK counter (C40), 20 bits as the model
+    output wire        pd_nx,         // powered down after this edge (C66)
+    // frame schedule (tmc429_schedule): the phase prescaler[4:0], motor m's ticks in bit m, and
+    // the dividers motor m keeps in [4m+3:4m] with the writes of clk_config of this edge
+    input  wire [4:0]  phase,
+    input  wire [2:0]  cond_tick,
+    input  wire [2:0]  ramp_tick,
+    input  wire [2:0]  pulse_tick,
+    input  wire [2:0]  ramp_ld,       // the next edge is motor m's ramp phase
+    output wire [11:0] ramp_div,
+    output wire [11:0] pulse_div,
+    output wire [2:0]  w_div,         // a write of motor m's clk_config executes in this edge
+    output wire [3:0]  w_ramp_div,    // ... with these dividers
+    output wire [3:0]  w_pulse_div,
     // probes, motor m in bits [w*(m+1)-1 : w*m]
     output wire [71:0] p_x_target,
     output wire [71:0] p_x_actual,
@@ -55,8 +69,6 @@ module tmc429_regfile #(
     output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
     output wire [8:0]  drv_ifconf_nx,
     output wire [71:0] drv_conf,       // motor m in [24m+23:24m]: its current_scaling
-    output wire [2:0]  drv_ramp_tick,  // phase 16 + 7m of a ramp frame of motor m (not gated by run)
-    output wire [2:0]  drv_ramp_tick_nx, // drv_ramp_tick of the next edge (its register's input)
     output wire        drv_cw,         // cover datagram waiting
     output wire        drv_dgw,        // datagram-word write waiting
     output wire        drv_dw_write,   // a datagram_low/high_word write executes in this edge
@@ -144,40 +156,12 @@ module tmc429_regfile #(
         .refmux(refmux), .mot1r(mot1r),
         .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
 
-    // ---- frame schedule (C40, C41) ----------------------------------------------------
-    // F mod 2^div = 2^div - 1 <=> the number of trailing ones of F is at least div. Motor m's
-    // ramp tick is at phase TMC429_PH_RAMP(m), its pulse tick at TMC429_PH_PULSE(m), its
-    // condition slot at TMC429_PH_COMMIT(m) of every frame (rtl/tmc429_schedule.vh:
-    // 16 + 7m, 17 + 7m, 14 + 7m; C52, C61-C63). The ticks are registers formed
-    // one edge ahead: the phase after this edge is p + run, the frame changes only from phase
-    // 31 to 0 (and not while powered down), and the divider after this edge is the one a µC
-    // write of clk_config in this edge stores.
-    wire [14:0] frame = prescaler[19:5];
-    reg  [3:0]  ones_d;
-    integer k;
-    always @(*) begin
-        ones_d = 4'd15;
-        for (k = 14; k >= 0; k = k - 1)
-            if (!frame[k])
-                ones_d = k[3:0];
-    end
-    // the count registered: every tick falls at phase 2 or later (the schedule's test), so it
-    // is formed at least one edge after the frame changed and ones_q is the frame's count
-    // there; the priority encoder is not in the ticks' paths
-    reg  [3:0]  ones_q;
-    always @(posedge clk) begin
-        if (rst)
-            ones_q <= 4'd0;
-        else
-            ones_q <= ones_d;
-    end
-    // power_down after this edge (C66): set by a write of it, else cleared by the waking frame
-    // start. The ticks include run of the edge after (powered down the core has no tick).
-    wire [4:0] ph      = prescaler[4:0];
-    wire pd_nx       = w_pd | (pd & ~frame_start);
-    // a frame of the divider a µC write of clk_config in this edge stores (C40)
-    wire r_due_w     = ones_q >= wdata[`TMC429_F_RAMP_DIV];
-    wire p_due_w     = ones_q >= wdata[`TMC429_F_PULSE_DIV];
+    // ---- power down (C66) -------------------------------------------------------------
+    // power_down after this edge: set by a write of it, else cleared by the waking frame start
+    wire [4:0] ph      = phase;
+    assign pd_nx       = w_pd | (pd & ~frame_start);
+    assign w_ramp_div  = wdata[`TMC429_F_RAMP_DIV];
+    assign w_pulse_div = wdata[`TMC429_F_PULSE_DIV];
 
     // ---- read address decode (C10) ---------------------------------------------------------
     // The address is complete in the SPI input register from the edge after the 7th bit, and
@@ -212,19 +196,14 @@ module tmc429_regfile #(
     wire [2:0]  xeqt, irq;
 
     wire [5:0]  m_rm;
-    wire [11:0] m_pulse_div, m_ramp_div;
     wire [2:0]  m_brake_en;
     wire [35:0] m_vt;
     wire [59:0] m_v_hold;
-    wire [2:0]  m_stop_soft, ph_ramp_ld;
+    wire [2:0]  m_stop_soft;
     wire [2:0]  m_v_rnd;      // v_actual = V[19:8] + v_rnd of motor m
     wire [19:0] v_rmp;
     wire [11:0] a_rmp;
     wire        mc_rmp;
-    reg  [2:0]  ramp_tick, pulse_tick, cond_tick;
-    wire [2:0]  ramp_tick_nx;
-    assign drv_ramp_tick = ramp_tick;
-    assign drv_ramp_tick_nx = ramp_tick_nx;
 
     genvar g;
     generate
@@ -232,38 +211,15 @@ module tmc429_regfile #(
             wire present = g < NMOT;
             wire we_m  = wr_mot & (a7[`TMC429_A7_SMDA] == g);
             // a write of this motor's clk_config executes in this edge (one edge ahead, above)
-            reg  w_div;
+            reg  w_clk;
             always @(posedge clk) begin
                 if (rst)
-                    w_div <= 1'b0;
+                    w_clk <= 1'b0;
                 else
-                    w_div <= reg_nx & present & (a7_nx[`TMC429_A7_SMDA] == g)
+                    w_clk <= reg_nx & present & (a7_nx[`TMC429_A7_SMDA] == g)
                            & (a7_nx[`TMC429_A7_IDX] == `TMC429_IDX_CLK_CONFIG);
             end
-            // the frame's trailing ones against the divider stored and the one written, each a
-            // comparison from flip-flops; the write selects after them
-            wire r_due = w_div ? r_due_w : (ones_q >= m_ramp_div[4*g+3:4*g]);
-            wire p_due = w_div ? p_due_w : (ones_q >= m_pulse_div[4*g+3:4*g]);
-            localparam [4:0] PH_RAMP = `TMC429_PH_RAMP(g);
-            localparam [4:0] PH_PULSE = `TMC429_PH_PULSE(g);
-            localparam [4:0] PH_COND = `TMC429_PH_COMMIT(g);
-            wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
-            assign ph_ramp_ld[g] = ph_ramp_nx;
-            wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_PULSE - 5'd1) : (ph == PH_PULSE));
-            assign ramp_tick_nx[g] = ph_ramp_nx & r_due;
-            always @(posedge clk) begin
-                if (rst) begin
-                    ramp_tick[g] <= 1'b0;
-                    pulse_tick[g] <= 1'b0;
-                    cond_tick[g] <= PH_COND == 5'd0;
-                end else begin
-                    ramp_tick[g] <= ramp_tick_nx[g];
-                    pulse_tick[g] <= ph_pulse_nx & p_due;
-                    // the condition slot: the commit phase of every frame, whether the core
-                    // runs in it or not (tmc429_ramp acts on it only with run)
-                    cond_tick[g] <= run ? (ph == PH_COND - 5'd1) : (ph == PH_COND);
-                end
-            end
+            assign w_div[g] = w_clk;
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & present),
                 .we(we_m), .widx(jdx), .wdata(wdata),
@@ -279,7 +235,7 @@ module tmc429_regfile #(
                 .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
                 .xeqt(xeqt[g]), .irq(irq[g]),
                 .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
-                .pulse_div(m_pulse_div[4*g+3:4*g]), .ramp_div(m_ramp_div[4*g+3:4*g]),
+                .pulse_div(pulse_div[4*g+3:4*g]), .ramp_div(ramp_div[4*g+3:4*g]),
                 .brake_en(m_brake_en[g]),
                 .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]), .v_rnd(m_v_rnd[g]),
                 .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
@@ -325,7 +281,7 @@ module tmc429_regfile #(
     // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
     // C51): its operands are registered in the edge into a motor's ramp phase
     tmc429_accel #(.NMOT(NMOT)) u_accel (
-        .clk(clk), .rst(rst), .ld(ph_ramp_ld), .phase(ph),
+        .clk(clk), .rst(rst), .ld(ramp_ld), .phase(ph),
         .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft),
         .a_max_we(wr_mot & (jdx == `TMC429_IDX_A_MAX)), .a_max_m(a7[`TMC429_A7_SMDA]),
         .a_max_wd(wdata[`TMC429_F_A_MAX]),
@@ -333,7 +289,7 @@ module tmc429_regfile #(
 
     // ---- target velocity (C41, C50) -------------------------------------------------------
     tmc429_vtarget #(.NMOT(NMOT), .ROOT_SPEC(0)) u_vt (
-        .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
+        .clk(clk), .rst(rst), .run(run), .phase(ph),
         .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
         .v_target(p_v_target), .brake_en(m_brake_en),
         .cfg_we(wr_mot), .cfg_m(a7[`TMC429_A7_SMDA]), .cfg_idx(jdx),
@@ -407,17 +363,14 @@ module tmc429_regfile #(
             gp_low <= 8'd0;  clk2_div <= GCONF_RST[`TMC429_F_CLK2_DIV];
             cont_update <= 1'b0;  refmux <= 1'b0;  mot1r <= 1'b0;
             pd <= 1'b0;
-            prescaler <= 20'd0;
             nint_q <= 1'b1;
             poscmp_q <= HAS_429;
         end else begin
             nint_q   <= ~int_o;
             cov_late <= w_cover;
             poscmp_q <= pc_match;
-            if (run) begin
-                prescaler <= prescaler + 20'd1;
-                pc_hist   <= poscmp_q;
-            end
+            if (run)
+                pc_hist <= poscmp_q;
             pc_m <= pc_m_nx;
             pc_i <= ((pc_i & ~pc_w1c) | pc_event) & pc_m_nx;
             pd <= pd_nx;

@@ -5,9 +5,9 @@
 // tmc429_model::Inputs / Outputs; the probe_* ports are the probe bundle
 // (tmc429_model::Probes) that co-simulation compares every cycle.
 //
-// Blocks present: synchronizers (C4), µC SPI slave (C10-C13), register file (C20-C31) with
-// the motion core (C40-C66: target velocity, ramp and pulse generators, switch stop, latch,
-// interrupts), RAM (C30), and the driver side: current scaling (C75-C77), driver chain with
+// Blocks present: synchronizers (C4), µC SPI slave (C10-C13), frame schedule (C40, C41),
+// register file (C20-C31) with the motion core (C42-C66: target velocity, ramp and pulse
+// generators, switch stop, latch, interrupts), RAM (C30), and the driver side: current scaling (C75-C77), driver chain with
 // the microstep unit (C70-C74, C80-C89), Step/Dir (C91-C96), driver pins (C81, C87, C90).
 `default_nettype none
 `include "tmc429_regmap.vh"
@@ -110,7 +110,11 @@ module tmc429_top #(
     wire [71:0] drv_conf;     // current_scaling of motor m in [24m+23:24m]
     wire [23:0] drv_m0 = drv_conf[23:0], drv_m1 = drv_conf[47:24], drv_m2 = drv_conf[71:48];
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [2:0]  rtick, rtick_nx;
+    // frame schedule <-> register file
+    wire        pd_nx;
+    wire [2:0]  cond_tick, rtick, rtick_nx, ptick, ramp_ld, w_div;
+    wire [11:0] ramp_div, pulse_div;
+    wire [3:0]  w_ramp_div, w_pulse_div;
     wire [23:0] cover_datagram;
     wire        cw, dgw, dw_write, take, ret_cw, ret_dgw, cover_busy, dgw_busy, ram_re;
     wire [5:0]  cover_pos, mux_sw, ram_q;
@@ -124,14 +128,16 @@ module tmc429_top #(
         .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_load(rd_load), .rd_data(rd_data), .rd_round(rd_round),
         .ref_q(ref_q), .refr_q(refr_q),
         .status(status), .nint_q(nint_q), .sdo_int(sdo_int),
-        .poscmp_q(poscmp_q), .pd(pd), .prescaler(prescaler),
+        .poscmp_q(poscmp_q), .pd(pd), .pd_nx(pd_nx),
+        .phase(prescaler[4:0]), .cond_tick(cond_tick), .ramp_tick(rtick), .pulse_tick(ptick),
+        .ramp_ld(ramp_ld), .ramp_div(ramp_div), .pulse_div(pulse_div),
+        .w_div(w_div), .w_ramp_div(w_ramp_div), .w_pulse_div(w_pulse_div),
         .p_x_target(p_x_target), .p_x_actual(p_x_actual), .p_v(p_v),
         .p_v_target(p_v_target), .p_a_actual(p_a_actual), .p_ustep(p_ustep),
         .p_pulse_acc(p_pulse_acc), .p_step(p_step), .p_dir(p_dir),
         .drv_gconf(gconf), .drv_gconf_nx(gconf_nx),
         .drv_gconf_we(gconf_we), .drv_gconf_wd(gconf_wd), .drv_ifconf(ifconf),
-        .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf), .drv_ramp_tick(rtick),
-        .drv_ramp_tick_nx(rtick_nx),
+        .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf),
         .drv_cw(cw), .drv_dgw(dgw), .drv_dw_write(dw_write),
         .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
         .drv_cover_datagram(cover_datagram),
@@ -139,6 +145,14 @@ module tmc429_top #(
         .chain_cover_busy(cover_busy), .chain_dgw_busy(dgw_busy), .chain_readback(readback),
         .mux_sw(mux_sw), .chain_ram_re(ram_re), .chain_ram_addr(ram_addr),
         .chain_ram_q(ram_q));
+
+    // ---- frame schedule (C40, C41) -----------------------------------------------------------
+    tmc429_schedule u_sched (
+        .clk(clk), .rst(rst), .run(~pd), .pd_nx(pd_nx),
+        .ramp_div(ramp_div), .pulse_div(pulse_div),
+        .w_div(w_div), .w_ramp_div(w_ramp_div), .w_pulse_div(w_pulse_div),
+        .prescaler(prescaler), .cond_tick(cond_tick), .ramp_tick(rtick), .pulse_tick(ptick),
+        .ramp_tick_nx(rtick_nx), .ramp_ld(ramp_ld));
 
     // ---- pins (C11, C90) --------------------------------------------------------------------
     // While a frame is active the pin carries the data bit, otherwise nINT (registered: INT

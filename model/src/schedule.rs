@@ -1,5 +1,5 @@
-//! The frame schedule (the pre-divider and tick logic of `rtl/tmc429_regfile.v`): the
-//! pre-divider counter C, its phase and frame, and the slots of the 32-cycle frame in which the
+//! The frame schedule (`rtl/tmc429_schedule.v`, the same unit): the pre-divider counter C, its
+//! phase and frame, and the slots of the 32-cycle frame in which the
 //! target velocities are snapshot and committed and the ramp and pulse ticks fall (TMC428 §8.7,
 //! §8.13; TMC429 §8.1.7; docs/model-contract.md C40, C41).
 

@@ -60,7 +60,7 @@ mod tests {
     /// its commit (the target-velocity unit's stages), and the ramp tick's operands,
     /// registered in the edge before the tick (`rtl/tmc429_accel.v`), take a target committed
     /// in an earlier edge; the ticks, formed in the edge before them from the frame's count of
-    /// trailing ones registered one edge earlier (`rtl/tmc429_regfile.v`), fall at phase 2 or
+    /// trailing ones registered one edge earlier (`rtl/tmc429_schedule.v`), fall at phase 2 or
     /// later, so that the count is the frame's.
     #[test]
     fn every_lane_has_the_same_shape() {
