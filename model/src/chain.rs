@@ -24,7 +24,7 @@
 
 use crate::current::CurrentScale;
 use crate::microstep::{self, Polarity};
-use crate::motor::Motor;
+use crate::motor_regs::Motor;
 use crate::regmap::f;
 use crate::Global;
 

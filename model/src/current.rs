@@ -2,7 +2,7 @@
 //! TMC429 §8.1.9) with the is_v0 delay of 255 ramp ticks at rest (contract C75–C77).
 //! The DAC values are scaled by [`crate::microstep::scale`] (Table 8-1).
 
-use crate::motor::Motor;
+use crate::motor_regs::Motor;
 
 /// Which scale factor is selected.
 pub const SEL_ALEAT: u8 = 0;

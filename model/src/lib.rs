@@ -12,11 +12,12 @@ mod drvpins;
 pub mod events;
 pub mod host;
 pub mod microstep;
-pub mod motor;
+pub mod motor_regs;
 pub mod pins;
 pub mod pmulpdiv;
 pub mod ram;
 pub mod ramp;
+pub mod refsw;
 pub mod regfile;
 pub mod regmap;
 pub mod regmap_render;
@@ -27,7 +28,6 @@ pub mod schedule_verilog;
 pub mod script;
 pub mod spi_slave;
 pub mod stepdir;
-pub mod switches;
 pub mod sync;
 pub mod text;
 pub mod vtarget;
@@ -36,7 +36,7 @@ pub use chip::{Chip, Package};
 pub use pins::{Bonding, ChainProbe, Inputs, MotorProbe, Outputs, Probes};
 pub use regfile::Global;
 
-use motor::*;
+use motor_regs::*;
 use regmap::{f, Addr};
 use spi_slave::{SpiEvent, SpiSlave};
 use sync::SyncBank;
@@ -211,7 +211,7 @@ impl Tmc429 {
 
     /// Left and right switch levels of the three motors as bit masks (bit m = motor m) (C60).
     pub fn switches(&self) -> (u8, u8) {
-        switches::levels(self.chip, &self.global, self.sync.s2)
+        refsw::levels(self.chip, &self.global, self.sync.s2)
     }
 
     /// The probe bundle of the current state.
@@ -538,7 +538,7 @@ impl Tmc429 {
     /// target velocities (C41) and each motor's ramp and pulse generator ([`ramp::edge`]).
     fn motion(&mut self, pins: u16, events: &mut [u8; 3]) {
         let c = self.prescaler;
-        let (left, right) = switches::levels(self.chip, &self.global, pins);
+        let (left, right) = refsw::levels(self.chip, &self.global, pins);
         let n = self.motor_count();
         for (i, m) in self.motors.iter_mut().enumerate().take(n) {
             // The ramp and pulse generator uses the committed target of the old state (C41).
@@ -560,7 +560,7 @@ impl Tmc429 {
         let c = self.prescaler;
         let n = self.motor_count();
         if let Some(i) = schedule::lane_of(&PHASE_COMMIT, schedule::phase(c)).filter(|&i| i < n) {
-            let (left, right) = switches::levels(self.chip, &self.global, pins);
+            let (left, right) = refsw::levels(self.chip, &self.global, pins);
             let m = &mut self.motors[i];
             m.cond_next = ramp::evaluate(m, m.vt, (left >> i) & 1 != 0, (right >> i) & 1 != 0);
         }

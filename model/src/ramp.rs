@@ -4,7 +4,7 @@
 //! C61–C63, C3), with its port-level boundary for test vectors.
 
 use crate::accel;
-use crate::motor::*;
+use crate::motor_regs::*;
 
 /// One edge of motor `m`'s ramp and pulse generator from the old state (C1): in the edge before
 /// the motor's condition slot (`sample_tick`) the conditions of the switch stop, stop at target,

@@ -3,7 +3,7 @@
 //! target velocities are snapshot and committed and the ramp and pulse ticks fall (TMC428 §8.7,
 //! §8.13; TMC429 §8.1.7; docs/model-contract.md C40, C41).
 
-use crate::motor::Motor;
+use crate::motor_regs::Motor;
 
 /// Width of the pre-divider counter C (C40): 5 phase bits + 15 frame bits cover every
 /// pulse_div and ramp_div.

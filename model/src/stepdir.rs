@@ -10,7 +10,7 @@
 //! (24-bit, the difference between x_actual and the position given to the driver); READY
 //! takes the step of the same edge into account, so a pulse starts one CLK after the step.
 
-use crate::motor::Motor;
+use crate::motor_regs::Motor;
 
 pub const READY: u8 = 0;
 pub const PULSE: u8 = 1;

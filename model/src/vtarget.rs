@@ -2,7 +2,7 @@
 //! registers, snapshot in the motor's slot of the frame and committed for all motors at once
 //! (TMC428 §8.7–§8.11, TMC429 §8.1.10; docs/model-contract.md C41, C43, C50).
 
-use crate::motor::*;
+use crate::motor_regs::*;
 use crate::schedule::{lane_of, PHASE_COMMIT, PHASE_SNAPSHOT};
 
 /// |dx| limit of the ramp generator (TMC428 §8.7.1).

@@ -14,7 +14,7 @@ mod common;
 use common::frames::{Frames, Run};
 
 use proptest::prelude::*;
-use tmc429_model::motor::{Motor, RAMP_MODE};
+use tmc429_model::motor_regs::{Motor, RAMP_MODE};
 use tmc429_model::pmulpdiv;
 use tmc429_model::regmap::motor_a7;
 use tmc429_model::{Chip, Inputs, Tmc429};

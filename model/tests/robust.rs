@@ -5,7 +5,7 @@ mod common;
 use common::*;
 
 use proptest::prelude::*;
-use tmc429_model::motor::V_MAG_MAX;
+use tmc429_model::motor_regs::V_MAG_MAX;
 use tmc429_model::Chip;
 
 #[derive(Clone, Debug)]

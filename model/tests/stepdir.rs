@@ -122,7 +122,7 @@ fn pin_mapping_three_motors() {
     h.wait(1_000);
     let st = steps(&log);
     for m in 0..3u8 {
-        let x = tmc429_model::motor::sext24(h.read(motor_a7(m, 1)));
+        let x = tmc429_model::motor_regs::sext24(h.read(motor_a7(m, 1)));
         let n = st.iter().filter(|s| s.1 == m).count() as i32;
         let neg = st.iter().filter(|s| s.1 == m && s.2).count() as i32;
         assert!(n > 10);

@@ -8,7 +8,7 @@
 mod common;
 
 use tmc429_model::current::{CurrentScale, SEL_AGTAT, SEL_ALEAT, SEL_V0};
-use tmc429_model::motor::Motor;
+use tmc429_model::motor_regs::Motor;
 
 /// One edge: inputs of the unit and the expected i_scale after it.
 #[derive(Clone, Copy)]

@@ -7,7 +7,7 @@
 
 mod common;
 
-use tmc429_model::motor::Motor;
+use tmc429_model::motor_regs::Motor;
 use tmc429_model::stepdir::StepDir;
 
 const CYCLES: usize = 400_000;

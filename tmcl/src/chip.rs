@@ -26,7 +26,7 @@ pub trait Spi429 {
 
 /// Register addresses and bits of the TMC429, from the model's register map.
 pub mod reg {
-    use tmc429_model::motor;
+    use tmc429_model::motor_regs;
     pub use tmc429_model::regmap::idx::{
         A_ACTUAL, A_MAX, CLK_CONFIG as PULSEDIV_RAMPDIV, DX_REF_TOLERANCE, INTERRUPT as INT_MASK_FLAGS, PMUL_PDIV,
         REF_CONF_RM as REFCONF_RM, V_ACTUAL, V_MAX, V_MIN, V_TARGET, X_ACTUAL, X_TARGET,
@@ -49,9 +49,9 @@ pub mod reg {
     pub const DISABLE_STOP_R: u32 = f::DISABLE_STOP_R.mask();
     pub const SOFT_STOP: u32 = f::SOFT_STOP.mask();
     /// Ramp modes (rm).
-    pub const RM_RAMP: u32 = motor::RAMP_MODE as u32;
-    pub const RM_SOFT: u32 = motor::SOFT_MODE as u32;
-    pub const RM_VELOCITY: u32 = motor::VELOCITY_MODE as u32;
+    pub const RM_RAMP: u32 = motor_regs::RAMP_MODE as u32;
+    pub const RM_SOFT: u32 = motor_regs::SOFT_MODE as u32;
+    pub const RM_VELOCITY: u32 = motor_regs::VELOCITY_MODE as u32;
 }
 
 /// Sign-extends the low `bits` bits.

@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 use tmc429_model::regmap::{self, Addr};
-use tmc429_model::{chain, current, motor, stepdir, Chip, Outputs, Probes, Tmc429};
+use tmc429_model::{chain, current, motor_regs, stepdir, Chip, Outputs, Probes, Tmc429};
 
 use crate::stimulus::{Frame, PinLevels, Profile, MIN_HALF};
 
@@ -467,9 +467,9 @@ impl Coverage {
                 self.hit(USRS_STEP_BINS[(m.usrs & 7) as usize]);
                 self.hit(if pm.dir != 0 { "step negative" } else { "step positive" });
             }
-            let stop = m.cond_prev & motor::INT_STOP != 0;
+            let stop = m.cond_prev & motor_regs::INT_STOP != 0;
             if stop && !seen.stop[i] {
-                self.hit(if m.ref_conf & motor::SOFT_STOP != 0 { "switch stop, soft" } else { "switch stop, hard" });
+                self.hit(if m.ref_conf & motor_regs::SOFT_STOP != 0 { "switch stop, soft" } else { "switch stop, hard" });
             }
             seen.stop[i] = stop;
             if seen.lp[i] && !m.lp {
@@ -533,11 +533,11 @@ impl Coverage {
                 if m.v != 0 && m.rm != seen.rm[i] {
                     self.hit("mode change during motion");
                 }
-                if m.v != 0 && m.rm <= motor::SOFT_MODE && m.x_target != seen.x_target[i] {
+                if m.v != 0 && m.rm <= motor_regs::SOFT_MODE && m.x_target != seen.x_target[i] {
                     self.hit("x_target change during motion");
                 }
                 match m.rm {
-                    motor::RAMP_MODE | motor::SOFT_MODE => {
+                    motor_regs::RAMP_MODE | motor_regs::SOFT_MODE => {
                         if m.v != 0 {
                             seen.moved[i] = true;
                         } else if seen.moved[i] && m.x_actual == m.x_target {
@@ -545,7 +545,7 @@ impl Coverage {
                             seen.moved[i] = false;
                         }
                     }
-                    motor::VELOCITY_MODE => {
+                    motor_regs::VELOCITY_MODE => {
                         seen.moved[i] = false;
                         if m.v != 0 && v_act == m.vt {
                             self.hit("VELOCITY_MODE: v_actual reaches v_target");

@@ -7,7 +7,7 @@
 
 use proptest::prelude::*;
 
-use tmc429_model::motor::{RAMP_MODE, SOFT_MODE, VELOCITY_MODE};
+use tmc429_model::motor_regs::{RAMP_MODE, SOFT_MODE, VELOCITY_MODE};
 use tmc429_model::pmulpdiv;
 use tmc429_model::ram::TABLE_11_2;
 use tmc429_model::regmap::{f, idx, jdx};

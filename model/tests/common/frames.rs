@@ -6,7 +6,7 @@
 //! cycle by cycle.
 #![allow(dead_code)]
 
-use tmc429_model::motor::{sext24, Motor, HOLD_MODE, SOFT_MODE};
+use tmc429_model::motor_regs::{sext24, Motor, HOLD_MODE, SOFT_MODE};
 
 /// What one run observed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

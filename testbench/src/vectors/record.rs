@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 
 use tmc429_model::events::{Event, EventDecoder};
 use tmc429_model::microstep;
-use tmc429_model::motor::{self, sext24};
+use tmc429_model::motor_regs::{self, sext24};
 use tmc429_model::ramp;
 use tmc429_model::regmap::{self, Addr};
 use tmc429_model::{chain, schedule, script, Chip, Inputs, Outputs, Tmc429};
@@ -432,7 +432,7 @@ pub fn ramp_layout() -> Layout {
 
 /// One line of the ramp unit: the inputs `i` of an edge and the outputs after it
 /// ([`ramp::ramp_ports`] of the motor state `m`).
-pub fn ramp_values(rst: bool, i: &ramp::RampInputs, m: &motor::Motor) -> [u64; 32] {
+pub fn ramp_values(rst: bool, i: &ramp::RampInputs, m: &motor_regs::Motor) -> [u64; 32] {
     let o = ramp::ramp_ports(m, i);
     [
         rst as u64,
@@ -488,7 +488,7 @@ impl RampPins {
         let layout = ramp_layout();
         Ok(RampPins { enc: LineEncoder::new(&layout), w: PinWriter::create(stem, layout)?, rest: Vec::new(), pre: Vec::new() })
     }
-    fn line(&mut self, m: usize, rst: bool, i: &ramp::RampInputs, mo: &motor::Motor) -> Result<(), String> {
+    fn line(&mut self, m: usize, rst: bool, i: &ramp::RampInputs, mo: &motor_regs::Motor) -> Result<(), String> {
         let v = ramp_values(rst, i, mo);
         if m == 0 {
             self.w.line(&v)
@@ -718,7 +718,7 @@ impl Recorder for RampCsv {
                 let c = &mut self.csv;
                 c.field(chip.cycle()).field(m).field(MODES[mo.rm as usize & 3]);
                 c.field(sext24(mo.x_target)).field(sext24(mo.x_actual)).field(mo.v).field(mo.v_actual());
-                c.field(tmc429_model::motor::sext12(mo.v_target as u32)).field(mo.a_actual).field(self.steps[m]);
+                c.field(tmc429_model::motor_regs::sext12(mo.v_target as u32)).field(mo.a_actual).field(self.steps[m]);
                 c.end_row()?;
                 self.steps[m] = 0;
             }

@@ -1,4 +1,5 @@
-//! Reference switch mapping (TMC428 §9.6, Table 9-3; TMC429 §8.2.4.5; contract C60).
+//! Reference switch mapping (`rtl/tmc429_refsw.v`, the same unit; TMC428 §9.6, Table 9-3;
+//! TMC429 §8.2.4.5; contract C60).
 
 use crate::regmap::f;
 use crate::sync::bit;

@@ -1,5 +1,5 @@
-//! One motor's registers and motion state: ramp generator and pulse generator
-//! (TMC428 §8, TMC429 §8.1; contract C40–C54, C61–C63).
+//! One motor's registers and motion state (`rtl/tmc429_motor_regs.v`, the same unit, with its ramp
+//! and pulse generator `ramp.rs`; TMC428 §8, TMC429 §8.1; contract C40–C54, C61–C63).
 
 /// Ramp modes (TMC428 Table 8-3).
 pub const RAMP_MODE: u8 = 0;
