@@ -35,11 +35,6 @@ module tmc429_motor_regs #(
     input  wire        cond_tick, // the motor's commit phase: its condition slot (C41)
     input  wire        ramp_tick, // ramp phase of a ramp frame (C40, C41)
     input  wire        pulse_tick,// pulse phase of a pulse frame
-    // after this edge: a pulse tick (with run), a µC write to this motor and its IDX
-    // (the registered strobes of tmc429_ramp)
-    input  wire        pulse_nx,
-    input  wire        we_nx,
-    input  wire [3:0]  widx_nx,
     input  wire [11:0] vt,        // committed target velocity (C41)
     // v_min and dx_ref_tolerance - 1 (-1 for 0) of the motor whose condition slot is next:
     // valid in the cycle before this motor's condition slot (tmc429_pram in tmc429_regfile)
@@ -93,7 +88,6 @@ module tmc429_motor_regs #(
     // ---- ramp and pulse generator, switch stop, latch ------------------------------------
     tmc429_ramp #(.HAS_USTEP(HAS_USTEP)) u_ramp (
         .clk(clk), .rst(rst), .run(run), .cond_tick(cond_tick), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
-        .pulse_nx(pulse_nx), .we_nx(we_nx), .widx_nx(widx_nx),
         .rm(rm), .x_target(x_target), .v_min(v_min), .ref_conf(ref_conf),
         .usrs(usrs), .tol_m1(tol_m1), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),

@@ -25,10 +25,7 @@
 //   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is one
 //                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
 // µC writes (we, widx, wdata; any run level) take priority over all of these (C3); register
-// indices and fields: rtl/tmc429_regmap.vh. The step's registers (x_actual, ustep) load on
-// the pulse sum's carry out through one LUT: the pulse tick without stop_hard (p_arm) and the
-// µC writes of x_actual and ustep_count (w_x, w_us) are flip-flops formed one edge ahead
-// (pulse_nx, we_nx, widx_nx), so the carry out meets only them in the clock enables.
+// indices and fields: rtl/tmc429_regmap.vh.
 `default_nettype none
 `include "tmc429_regmap.vh"
 
@@ -41,11 +38,6 @@ module tmc429_ramp #(
     input  wire        cond_tick,  // phase 14 + 7m, motor m's commit: its condition slot (C41)
     input  wire        ramp_tick,  // phase 16 + 7m of a ramp frame of this motor m (C40, C41)
     input  wire        pulse_tick, // phase 17 + 7m of a pulse frame of this motor
-    // the same after this edge, and run (the next edge is a pulse tick of a running core);
-    // the µC write to this motor after this edge and its register index
-    input  wire        pulse_nx,
-    input  wire        we_nx,
-    input  wire [3:0]  widx_nx,
     // registers of the motor (old state)
     input  wire [1:0]  rm,
     input  wire [23:0] x_target,
@@ -167,11 +159,7 @@ module tmc429_ramp #(
     wire [12:0] p_t   = {1'b0, acc, v_mc} + {1'b0, v_mx, v_mc};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [10:0] p_sum = stop_hard ? acc : p_t[11:1];
-    // p_arm = run & pulse_tick & ~stop_hard, a register formed one edge ahead: stop_hard
-    // changes only in the condition slot, which is never the pulse tick's edge
-    reg         p_arm;
-    wire        stop_hard_nx = (run & cond_tick) ? c_hard : stop_hard;
-    wire        p_step = p_arm & p_t[12];
+    wire        p_step = pulse_tick & ~stop_hard & p_t[12];
     reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
     always @(*) begin
         case ({v_neg, usrs})
@@ -185,12 +173,11 @@ module tmc429_ramp #(
     wire [7:0]  u_stp = ustep + inc;
 
     // ---- µC writes (C3, C23) ------------------------------------------------------------------
-    // x_actual and ustep_count: strobes registered from the write after the edge (the same
-    // decode of the same datagram, one edge earlier)
-    reg         w_x, w_us;
+    wire        w_x   = we & (widx == `TMC429_IDX_X_ACTUAL);
     wire        w_vt  = we & (widx == `TMC429_IDX_V_TARGET);
     wire        w_va  = we & (widx == `TMC429_IDX_V_ACTUAL);
     wire        w_lp  = we & (widx == `TMC429_IDX_X_LATCHED);
+    wire        w_us  = we & (widx == `TMC429_IDX_USTEP_COUNT) & (HAS_USTEP != 0);
     wire [11:0] w_v   = (wdata[`TMC429_F_V_ACTUAL] == 12'h800) ? 12'h801 : wdata[`TMC429_F_V_ACTUAL];
 
     // ---- V's next state (C3, C51, C61) ----------------------------------------------------
@@ -208,7 +195,6 @@ module tmc429_ramp #(
             ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
             stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
-            p_arm <= 1'b0;      w_x <= 1'b0;        w_us <= 1'b0;
             c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
             c_stop <= 1'b0;     c_tol <= 1'b0;
         end else begin
@@ -218,9 +204,6 @@ module tmc429_ramp #(
             c_stop  <= stop;
             c_tol   <= tol_ok;
             c_latch <= lp & va_nz & (sel != ref_prev);
-            p_arm   <= pulse_nx & ~stop_hard_nx;
-            w_x     <= we_nx & (widx_nx == `TMC429_IDX_X_ACTUAL);
-            w_us    <= we_nx & (widx_nx == `TMC429_IDX_USTEP_COUNT) & (HAS_USTEP != 0);
             if (run) begin
                 if (cond_tick) begin
                     ref_prev <= c_sel;
@@ -239,22 +222,18 @@ module tmc429_ramp #(
                 step <= p_step;
                 if (pulse_tick)
                     acc <= p_sum;
-                if (p_step)
+                if (p_step) begin
+                    x_actual <= x_stp;
+                    ustep <= u_stp;
                     dir <= v_neg;
+                end
             end
             v <= v_load ? v_rmp : v_hold;
             v_mc <= v_load ? mc_rmp : mc_hold;
-            // a step (p_step implies run) unless the µC writes the register (C3)
-            if (w_x)
-                x_actual <= wdata[`TMC429_F_X_ACTUAL];
-            else if (p_step)
-                x_actual <= x_stp;
-            if (w_us)
-                ustep <= wdata[`TMC429_F_USTEP_COUNT];
-            else if (p_step)
-                ustep <= u_stp;
+            if (w_x)  x_actual <= wdata[`TMC429_F_X_ACTUAL];
             if (w_vt) v_target <= wdata[`TMC429_F_V_TARGET];
             if (w_lp) lp <= 1'b1;
+            if (w_us) ustep <= wdata[`TMC429_F_USTEP_COUNT];
         end
     end
 endmodule

@@ -45,7 +45,6 @@ module tmc429_regfile #(
     input  wire [2:0]  cond_tick,
     input  wire [2:0]  ramp_tick,
     input  wire [2:0]  pulse_tick,
-    input  wire [2:0]  pulse_tick_nx, // pulse_tick after this edge
     input  wire [2:0]  ramp_ld,       // the next edge is motor m's ramp phase
     output wire [11:0] ramp_div,
     output wire [11:0] pulse_div,
@@ -229,9 +228,6 @@ module tmc429_regfile #(
                 .cond_tick(cond_tick[g]),
                 .ramp_tick(ramp_tick[g]),
                 .pulse_tick(pulse_tick[g]),
-                .pulse_nx(pulse_tick_nx[g] & present),
-                .we_nx(reg_nx & present & (a7_nx[`TMC429_A7_SMDA] == g)),
-                .widx_nx(a7_nx[`TMC429_A7_IDX]),
                 .vt(m_vt[12*g+11:12*g]),
                 .v_min(cond_vmin), .tol_m1(cond_tol_m1),
                 .v_hold(m_v_hold[20*g+19:20*g]),

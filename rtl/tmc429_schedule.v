@@ -33,7 +33,6 @@ module tmc429_schedule (
     output reg  [2:0]  ramp_tick,    // motor m's ramp tick (0 while powered down)
     output reg  [2:0]  pulse_tick,   // motor m's pulse tick (0 while powered down)
     output wire [2:0]  ramp_tick_nx, // ramp_tick after this edge (its register's input)
-    output wire [2:0]  pulse_tick_nx,// pulse_tick after this edge (its register's input)
     output wire [2:0]  ramp_ld       // the next edge is motor m's ramp phase, due or not
 );
     // the frame's count of trailing ones (0..15)
@@ -80,7 +79,6 @@ module tmc429_schedule (
             wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_PULSE - 5'd1) : (ph == PH_PULSE));
             assign ramp_ld[g] = ph_ramp_nx;
             assign ramp_tick_nx[g] = ph_ramp_nx & r_due;
-            assign pulse_tick_nx[g] = ph_pulse_nx & p_due;
             always @(posedge clk) begin
                 if (rst) begin
                     ramp_tick[g] <= 1'b0;
@@ -88,7 +86,7 @@ module tmc429_schedule (
                     cond_tick[g] <= PH_COND == 5'd0;
                 end else begin
                     ramp_tick[g] <= ramp_tick_nx[g];
-                    pulse_tick[g] <= pulse_tick_nx[g];
+                    pulse_tick[g] <= ph_pulse_nx & p_due;
                     // the condition slot: the commit phase of every frame, whether the core
                     // runs in it or not (tmc429_ramp acts on it only with run)
                     cond_tick[g] <= run ? (ph == PH_COND - 5'd1) : (ph == PH_COND);

@@ -112,7 +112,7 @@ module tmc429_top #(
     /* verilator lint_on UNUSEDSIGNAL */
     // frame schedule <-> register file
     wire        pd_nx;
-    wire [2:0]  cond_tick, rtick, rtick_nx, ptick, ptick_nx, ramp_ld, w_div;
+    wire [2:0]  cond_tick, rtick, rtick_nx, ptick, ramp_ld, w_div;
     wire [11:0] ramp_div, pulse_div;
     wire [3:0]  w_ramp_div, w_pulse_div;
     wire [23:0] cover_datagram;
@@ -130,7 +130,7 @@ module tmc429_top #(
         .status(status), .nint_q(nint_q), .sdo_int(sdo_int),
         .poscmp_q(poscmp_q), .pd(pd), .pd_nx(pd_nx),
         .phase(prescaler[4:0]), .cond_tick(cond_tick), .ramp_tick(rtick), .pulse_tick(ptick),
-        .pulse_tick_nx(ptick_nx), .ramp_ld(ramp_ld), .ramp_div(ramp_div), .pulse_div(pulse_div),
+        .ramp_ld(ramp_ld), .ramp_div(ramp_div), .pulse_div(pulse_div),
         .w_div(w_div), .w_ramp_div(w_ramp_div), .w_pulse_div(w_pulse_div),
         .p_x_target(p_x_target), .p_x_actual(p_x_actual), .p_v(p_v),
         .p_v_target(p_v_target), .p_a_actual(p_a_actual), .p_ustep(p_ustep),
@@ -152,7 +152,7 @@ module tmc429_top #(
         .ramp_div(ramp_div), .pulse_div(pulse_div),
         .w_div(w_div), .w_ramp_div(w_ramp_div), .w_pulse_div(w_pulse_div),
         .prescaler(prescaler), .cond_tick(cond_tick), .ramp_tick(rtick), .pulse_tick(ptick),
-        .ramp_tick_nx(rtick_nx), .pulse_tick_nx(ptick_nx), .ramp_ld(ramp_ld));
+        .ramp_tick_nx(rtick_nx), .ramp_ld(ramp_ld));
 
     // ---- pins (C11, C90) --------------------------------------------------------------------
     // While a frame is active the pin carries the data bit, otherwise nINT (registered: INT

@@ -34,8 +34,6 @@ module tb_ramp;
     tmc429_ramp #(.HAS_USTEP(CHIP != 0)) dut (
         .clk(clk), .rst(vin[114]),
         .run(vin[113]), .cond_tick(vin[112]), .ramp_tick(vin[111]), .pulse_tick(vin[110]), .rm(vin[109:108]),
-        // the strobes registered one edge ahead: the next line's pulse tick (with run) and write
-        .pulse_nx(vin_nx[110] & vin_nx[113]), .we_nx(vin_nx[28]), .widx_nx(vin_nx[27:24]),
         .x_target(vin[107:84]), .v_min(vin[83:73]), .ref_conf(vin[61:58]),
         .usrs(vin[57:55]), .tol_m1({1'b0, vin[54:43]} - 13'd1), .vt(vin[42:31]),
         .sw_l(vin[30]), .sw_r(vin[29]),
