@@ -162,16 +162,6 @@ impl Tmc429 {
         }
     }
 
-    fn has_pos_comp(&self) -> bool {
-        self.chip != Chip::Tmc428
-    }
-
-    /// The variant has the SDOZ_C and POSCMP pins (C90): the TMC429 (its SSOP16 package
-    /// excepted, [`Bonding`]); the TMC4210 has the registers, not the pins ([4210] §3.2).
-    fn has_poscmp_pin(&self) -> bool {
-        self.chip == Chip::Tmc429
-    }
-
     /// Read-only view of a motor's registers and state.
     pub fn motor(&self, m: usize) -> &Motor {
         &self.motors[m]
@@ -185,28 +175,6 @@ impl Tmc429 {
     /// RAM contents (cells 0..127).
     pub fn ram(&self) -> &[u8; 128] {
         &self.ram
-    }
-
-    /// The status byte `INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1` of the current state (C10).
-    pub fn status(&self) -> u8 {
-        let (l, _) = self.switches();
-        let mut s = 0u8;
-        for m in 0..3 {
-            let mo = &self.motors[m];
-            s |= ((mo.x_actual == mo.x_target) as u8) << (2 * m);
-            s |= ((l >> m) & 1) << (2 * m + 1);
-        }
-        s | (self.cdgw() as u8) << 6 | (self.int() as u8) << 7
-    }
-
-    fn cdgw(&self) -> bool {
-        self.chain.cdgw(&self.global)
-    }
-
-    /// INT (C64).
-    #[inline]
-    pub fn int(&self) -> bool {
-        self.motors.iter().any(|m| m.int_flags != 0) || (self.global.pc_i && self.global.pc_m)
     }
 
     /// Left and right switch levels of the three motors as bit masks (bit m = motor m) (C60).
@@ -469,16 +437,13 @@ impl Tmc429 {
                 self.quiet = self.motors == before;
                 self.quiet_pins = inputs;
             }
-            // C65: the flag follows the registered match (the POSCMP level)
-            pc_event = self.global.pc_match_q && !self.global.pc_match_prev;
-            self.global.pc_match_prev = self.global.pc_match_q;
+            pc_event = self.pos_compare_event();
             self.prescaler = schedule::next(self.prescaler);
         } else {
             // the edge before a condition slot takes its conditions while powered down too
             self.sample_powered_down(pins);
         }
-        if self.global.pc_match_q != match_old {
-            self.global.pc_match_q = match_old;
+        if self.pos_compare_register(match_old) {
             self.quiet = false;
         }
 
@@ -490,12 +455,7 @@ impl Tmc429 {
         for (m, e) in self.motors.iter_mut().zip(events) {
             m.int_flags = (m.int_flags | e) & m.int_mask;
         }
-        if pc_event && self.global.pc_m {
-            self.global.pc_i = true;
-        }
-        if !self.global.pc_m {
-            self.global.pc_i = false;
-        }
+        self.pos_compare_flag(pc_event);
         // INT changed by something other than the motors (the position compare flag): the
         // next edge registers it on nINT (C11), so it must not take the fast path.
         if self.int() != int_old {
@@ -523,15 +483,6 @@ impl Tmc429 {
             self.bond.outputs(&mut self.out);
         }
         self.out
-    }
-
-    /// Position compare match of the current state (C65).
-    fn pos_match(&self) -> bool {
-        if !self.has_pos_comp() {
-            return false;
-        }
-        let sel = (f::POS_COMP_SEL.get(self.global.ifconf) as usize).min(2);
-        self.motors[sel].x_actual == self.global.pos_comp
     }
 
     /// The motion core for one cycle (C40–C63), from the old state: the frame schedule of the

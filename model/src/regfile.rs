@@ -1,9 +1,10 @@
-//! The register file (`rtl/tmc429_regfile.v`): the global registers and the µC's register and
-//! RAM reads and writes with their side effects (TMC428 §7–§10, TMC429 §8, TMC4210 §5;
-//! docs/model-contract.md C20–C31, C87, C88).
+//! The register file (`rtl/tmc429_regfile.v`, the same unit): the global registers, the µC's
+//! register and RAM reads and writes with their side effects, the status byte, INT and the
+//! position compare (TMC428 §7–§10, TMC429 §8, TMC4210 §5; docs/model-contract.md C20–C31,
+//! C64, C65, C87, C88).
 
 use crate::regmap::{self, f, idx, jdx, Addr};
-use crate::{ram, Tmc429, TYPE_VERSION};
+use crate::{ram, Chip, Tmc429, TYPE_VERSION};
 
 /// Global registers, with the cover and datagram-word flags the driver chain takes and returns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -75,6 +76,81 @@ impl Global {
 }
 
 impl Tmc429 {
+    /// The variant has the position compare registers (C65): the TMC429 and the TMC4210.
+    #[inline]
+    pub(crate) fn has_pos_comp(&self) -> bool {
+        self.chip != Chip::Tmc428
+    }
+
+    /// The variant has the SDOZ_C and POSCMP pins (C90): the TMC429 (its SSOP16 package
+    /// excepted, [`Bonding`]); the TMC4210 has the registers, not the pins ([4210] §3.2).
+    #[inline]
+    pub(crate) fn has_poscmp_pin(&self) -> bool {
+        self.chip == Chip::Tmc429
+    }
+
+    /// The status byte `INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1` of the current state (C10).
+    pub fn status(&self) -> u8 {
+        let (l, _) = self.switches();
+        let mut s = 0u8;
+        for m in 0..3 {
+            let mo = &self.motors[m];
+            s |= ((mo.x_actual == mo.x_target) as u8) << (2 * m);
+            s |= ((l >> m) & 1) << (2 * m + 1);
+        }
+        s | (self.cdgw() as u8) << 6 | (self.int() as u8) << 7
+    }
+
+    pub(crate) fn cdgw(&self) -> bool {
+        self.chain.cdgw(&self.global)
+    }
+
+    /// INT (C64).
+    #[inline]
+    pub fn int(&self) -> bool {
+        self.motors.iter().any(|m| m.int_flags != 0) || (self.global.pc_i && self.global.pc_m)
+    }
+
+    /// Position compare match of the current state (C65).
+    #[inline]
+    pub(crate) fn pos_match(&self) -> bool {
+        if !self.has_pos_comp() {
+            return false;
+        }
+        let sel = (f::POS_COMP_SEL.get(self.global.ifconf) as usize).min(2);
+        self.motors[sel].x_actual == self.global.pos_comp
+    }
+
+    /// The position compare's event in a running edge (C65): the registered match (the POSCMP
+    /// level) rose since the last running edge.
+    #[inline]
+    pub(crate) fn pos_compare_event(&mut self) -> bool {
+        let event = self.global.pc_match_q && !self.global.pc_match_prev;
+        self.global.pc_match_prev = self.global.pc_match_q;
+        event
+    }
+
+    /// The match of the old state registered in every edge (the POSCMP level, C65); whether it
+    /// changed.
+    #[inline]
+    pub(crate) fn pos_compare_register(&mut self, match_old: bool) -> bool {
+        let changed = self.global.pc_match_q != match_old;
+        self.global.pc_match_q = match_old;
+        changed
+    }
+
+    /// The flag I after this edge's µC write (C3, C65): set by the event while the mask M is
+    /// set, cleared while it is not.
+    #[inline]
+    pub(crate) fn pos_compare_flag(&mut self, event: bool) {
+        if event && self.global.pc_m {
+            self.global.pc_i = true;
+        }
+        if !self.global.pc_m {
+            self.global.pc_i = false;
+        }
+    }
+
     /// The read value of a 7-bit address as the register file presents it to the SPI slave
     /// (`rtl/tmc429_regfile.v`): v_actual as V >> 8 rounded down, with its rounding toward 0
     /// (C42: 1 for a negative V with a nonzero low byte) apart, which the slave adds to bits
