@@ -83,7 +83,7 @@ impl Tmc429 {
     }
 
     /// The variant has the SDOZ_C and POSCMP pins (C90): the TMC429 (its SSOP16 package
-    /// excepted, [`Bonding`]); the TMC4210 has the registers, not the pins ([4210] §3.2).
+    /// excepted, [`crate::Bonding`]); the TMC4210 has the registers, not the pins ([4210] §3.2).
     #[inline]
     pub(crate) fn has_poscmp_pin(&self) -> bool {
         self.chip == Chip::Tmc429
