@@ -5,10 +5,10 @@
 // tmc429_model::Inputs / Outputs; the probe_* ports are the probe bundle
 // (tmc429_model::Probes) that co-simulation compares every cycle.
 //
-// Blocks present: synchronizers (C4), µC SPI slave (C10-C13), frame schedule (C40, C41),
-// register file (C20-C31) with the motion core (C42-C66: target velocity, ramp and pulse
-// generators, switch stop, latch, interrupts), RAM (C30), and the driver side: current scaling (C75-C77), driver chain with
-// the microstep unit (C70-C74, C80-C89), Step/Dir (C91-C96), driver pins (C81, C87, C90).
+// Blocks present: synchronizers (C4), µC SPI slave (C10-C13), frame schedule (C40, C41), register
+// file (C20-C31) with the motion core (C42-C66: target velocity, ramp and pulse generators, switch
+// stop, latch, interrupts), RAM (C30), and the driver side: current scaling (C75-C77), driver chain
+// with the microstep unit (C70-C74, C80-C89), Step/Dir (C91-C96), driver pins (C81, C87, C90).
 `default_nettype none
 `include "tmc429_regmap.vh"
 

@@ -101,7 +101,7 @@ impl Tmc429 {
         s | (self.cdgw() as u8) << 6 | (self.int() as u8) << 7
     }
 
-    pub(crate) fn cdgw(&self) -> bool {
+    fn cdgw(&self) -> bool {
         self.chain.cdgw(&self.global)
     }
 
