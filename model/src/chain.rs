@@ -237,30 +237,50 @@ impl Chain {
             self.stepped |= steps;
             return Handshake::default();
         }
-        let mut request = self.req || steps != 0 || g.cw;
-        if ramp_ticks != 0 && cont {
-            for m in 0..3 {
-                if (ramp_ticks >> m) & 1 != 0 {
-                    let wrap = self.cupd[m] == CUPD_RAMP_TICKS - 1;
-                    self.cupd[m] = (self.cupd[m] + 1) & (CUPD_RAMP_TICKS - 1);
-                    request |= wrap;
-                }
+        // the counters advance with every ramp tick, whatever else requests
+        let wrap = cont && self.count_ramp_ticks(ramp_ticks);
+        let request = self.req || steps != 0 || g.cw || wrap;
+        let (start, changed) = self.advance(ram, g, sdi_s, request);
+        if start {
+            self.start(g, motors, cur);
+        } else {
+            // In IDLE without a start no request is pending; elsewhere requests collapse.
+            self.req = request;
+            self.stepped |= steps;
+        }
+        Handshake { changed, take: start, ret_cw: false, ret_dgw: false }
+    }
+
+    /// The continuous-update counters (C83): each motor with a ramp tick in this edge counts;
+    /// true when one of them wraps (a request).
+    #[inline]
+    fn count_ramp_ticks(&mut self, ramp_ticks: u8) -> bool {
+        let mut wrap = false;
+        for m in 0..3 {
+            if (ramp_ticks >> m) & 1 != 0 {
+                wrap |= self.cupd[m] == CUPD_RAMP_TICKS - 1;
+                self.cupd[m] = (self.cupd[m] + 1) & (CUPD_RAMP_TICKS - 1);
             }
         }
+        wrap
+    }
 
-        let mut start = false;
-        let mut changed = true;
+    /// The datagram state machine's edge (C80–C82, C84–C87): `(start, changed)`, whether a
+    /// datagram starts in this edge (`request` in IDLE or at the end of CSOFF) and whether the
+    /// pins may change.
+    #[inline]
+    fn advance(&mut self, ram: &[u8; 128], g: &Global, sdi_s: bool, request: bool) -> (bool, bool) {
         match self.state {
-            IDLE => {
-                start = request;
-                changed = start;
-            }
+            IDLE => (request, request),
             _ if self.cnt > 1 => {
                 self.fetch(ram);
                 self.cnt -= 1;
-                changed = false;
+                (false, false)
             }
-            SETUP | GAP => self.next_bit(g),
+            SETUP | GAP => {
+                self.next_bit(g);
+                (false, true)
+            }
             LOW => {
                 // Rising SCK_S: the driver samples SDO_S; SDI_S shifts into the readback (C87).
                 self.sck = true;
@@ -268,26 +288,11 @@ impl Chain {
                 self.bits = (self.bits + 1).min(BITS_MAX);
                 self.state = HIGH;
                 self.cnt = timing(g.g(f::CLK2_DIV)).1;
+                (false, true)
             }
             HIGH => {
-                let (_, hi, _, gap) = timing(g.g(f::CLK2_DIV));
-                if self.nxm {
-                    // NxM (C86): LSMD 3 acts as 2.
-                    let lsmd = (g.g(f::LSMD) as u8).min(2);
-                    if self.motor >= lsmd {
-                        // t_HDSCSdrv after the last bit (C82).
-                        self.state = HOLD;
-                        self.cnt = hi;
-                    } else {
-                        self.motor += 1;
-                        self.cell = (self.cell + 1) & 63;
-                        self.state = GAP;
-                        self.cnt = gap;
-                    }
-                } else {
-                    self.cell = (self.cell + 1) & 63;
-                    self.next_bit(g);
-                }
+                self.after_high(g);
+                (false, true)
             }
             HOLD => {
                 // End of the datagram: CS inactive, SDO_S back high (C81), CDGW handshake
@@ -298,22 +303,38 @@ impl Chain {
                 self.dgw_busy = false;
                 self.state = CSOFF;
                 self.cnt = timing(g.g(f::CLK2_DIV)).2;
+                (false, true)
             }
             _ => {
                 // CSOFF over: the next datagram starts at once if one is requested.
                 self.state = IDLE;
-                start = request;
+                (request, true)
             }
         }
+    }
 
-        if start {
-            self.start(g, motors, cur);
-        } else {
-            // In IDLE without a start no request is pending; elsewhere requests collapse.
-            self.req = request;
-            self.stepped |= steps;
+    /// The end of a HIGH phase: the next cell's bit, or with NxM (C86) the next motor's
+    /// datagram after the gap, or the hold before CS goes inactive after the last motor (C82).
+    #[inline]
+    fn after_high(&mut self, g: &Global) {
+        if !self.nxm {
+            self.cell = (self.cell + 1) & 63;
+            self.next_bit(g);
+            return;
         }
-        Handshake { changed, take: start, ret_cw: false, ret_dgw: false }
+        let (_, hi, _, gap) = timing(g.g(f::CLK2_DIV));
+        // NxM (C86): LSMD 3 acts as 2.
+        let lsmd = (g.g(f::LSMD) as u8).min(2);
+        if self.motor >= lsmd {
+            // t_HDSCSdrv after the last bit (C82).
+            self.state = HOLD;
+            self.cnt = hi;
+        } else {
+            self.motor += 1;
+            self.cell = (self.cell + 1) & 63;
+            self.state = GAP;
+            self.cnt = gap;
+        }
     }
 
     /// The `readback_clr` input: a µC write of datagram_low_word or datagram_high_word executes

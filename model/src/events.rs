@@ -9,7 +9,7 @@
 use std::fmt;
 
 use crate::regmap::f;
-use crate::{Chip, Outputs, Tmc429};
+use crate::{Chip, Global, Outputs, Tmc429};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Event {
@@ -102,28 +102,41 @@ impl EventDecoder {
             return;
         }
         if step_dir {
-            self.frame = None;
-            let lv = step_pins(out);
-            let dirs = dir_pins(out);
-            let half = g.ifc(f::STEP_HALF);
-            let active = !g.ifc(f::INV_STP);
-            let inv_dir = g.ifc(f::INV_DIR);
-            let n = if chip.chip() == Chip::Tmc4210 { 1 } else { 3 };
-            for m in 0..n {
-                let was = self.step_level[m];
-                let now = lv[m];
-                let stepped = if half { was != now } else { !was && now == active };
-                if stepped {
-                    sink(Event::Step { cycle, motor: m as u8, negative: dirs[m] ^ inv_dir });
-                }
-            }
-            self.step_level = lv;
+            self.step_pulses(chip, out, cycle, sink);
             return;
         }
         self.step_level = step_pins(out);
         if chip.chip() == Chip::Tmc4210 {
             return;
         }
+        self.chain_frames(g, out, &prev, cycle, sink);
+    }
+
+    /// Step/Dir mode: a Step event for each motor whose STEP pin made an active edge (both
+    /// edges with step_half, C93), with its DIR level.
+    fn step_pulses(&mut self, chip: &Tmc429, out: &Outputs, cycle: u64, sink: &mut impl FnMut(Event)) {
+        let g = chip.global();
+        self.frame = None;
+        let lv = step_pins(out);
+        let dirs = dir_pins(out);
+        let half = g.ifc(f::STEP_HALF);
+        let active = !g.ifc(f::INV_STP);
+        let inv_dir = g.ifc(f::INV_DIR);
+        let n = if chip.chip() == Chip::Tmc4210 { 1 } else { 3 };
+        for m in 0..n {
+            let was = self.step_level[m];
+            let now = lv[m];
+            let stepped = if half { was != now } else { !was && now == active };
+            if stepped {
+                sink(Event::Step { cycle, motor: m as u8, negative: dirs[m] ^ inv_dir });
+            }
+        }
+        self.step_level = lv;
+    }
+
+    /// SPI mode: the bits of a datagram on SDO_S at the rising SCK_S edges while a chip select
+    /// is active (C81, C84), one Chain event when the select ends.
+    fn chain_frames(&mut self, g: &Global, out: &Outputs, prev: &Outputs, cycle: u64, sink: &mut impl FnMut(Event)) {
         // SPI chain: chip select active when any of nSCS_S, nSCS2, nSCS3 is active.
         let cs_high_active = g.g(f::POL_NSCS_S) != 0 && g.g(f::CS_COM_IND) == 0;
         let cs = |o: &Outputs| {
@@ -134,7 +147,7 @@ impl EventDecoder {
             }
         };
         let sck_inv = g.g(f::POL_SCK_S) != 0;
-        let (cs_now, cs_was) = (cs(out), cs(&prev));
+        let (cs_now, cs_was) = (cs(out), cs(prev));
         if cs_now && !cs_was {
             self.frame = Some((0, 0));
         }

@@ -3,7 +3,8 @@
 //! position compare (TMC428 §7–§10, TMC429 §8, TMC4210 §5; docs/model-contract.md C20–C31,
 //! C64, C65, C87, C88).
 
-use crate::regmap::{self, f, idx, jdx, Addr};
+use crate::motor_regs::Motor;
+use crate::regmap::{self, f, idx, jdx, Addr, Register};
 use crate::{ram, Chip, Tmc429, TYPE_VERSION};
 
 /// Global registers, with the cover and datagram-word flags the driver chain takes and returns.
@@ -168,62 +169,10 @@ impl Tmc429 {
         let Some((reg, motor)) = regmap::lookup(self.chip, a7) else {
             return 0;
         };
-        let g = &self.global;
         match Addr::from_a7(a7) {
             Addr::Ram(a) => ram::read_word(&self.ram, a),
-            Addr::Motor(_, i) => {
-                let m = &self.motors[motor.unwrap_or(0) as usize];
-                match i {
-                    idx::X_TARGET => m.x_target,
-                    idx::X_ACTUAL => m.x_actual,
-                    idx::V_MIN => m.v_min as u32,
-                    idx::V_MAX => m.v_max as u32,
-                    idx::V_TARGET => m.v_target as u32,
-                    idx::V_ACTUAL => f::V_ACTUAL.put(m.v_actual() as u32),
-                    idx::A_MAX => m.a_max as u32,
-                    idx::A_ACTUAL => f::A_ACTUAL.put(m.a_actual as u32),
-                    idx::CURRENT_SCALING => {
-                        f::IS_AGTAT.put(m.is_agtat as u32)
-                            | f::IS_ALEAT.put(m.is_aleat as u32)
-                            | f::IS_V0.put(m.is_v0 as u32)
-                            | f::A_THRESHOLD.put(m.a_threshold as u32)
-                    }
-                    idx::PMUL_PDIV => f::PMUL.put(0x80 | m.pmul as u32) | f::PDIV.put(m.pdiv as u32),
-                    idx::REF_CONF_RM => f::LP.put(m.lp as u32) | (m.ref_conf as u32) << f::DISABLE_STOP_L.lsb | f::RM.put(m.rm as u32),
-                    idx::INTERRUPT => f::INTERRUPT_MASK.put(m.int_mask as u32) | f::INTERRUPT_FLAGS.put(m.int_flags as u32),
-                    idx::CLK_CONFIG => {
-                        f::PULSE_DIV.put(m.pulse_div as u32) | f::RAMP_DIV.put(m.ramp_div as u32) | f::USRS.put(m.usrs as u32)
-                    }
-                    idx::DX_REF_TOLERANCE => m.dx_ref_tolerance as u32,
-                    idx::X_LATCHED => m.x_latched,
-                    idx::USTEP_COUNT => m.ustep as u32,
-                    _ => 0,
-                }
-            }
-            Addr::Global(j) => match j {
-                jdx::DATAGRAM_LOW_WORD => (self.chain.readback & 0xFF_FFFF) as u32,
-                jdx::DATAGRAM_HIGH_WORD => ((self.chain.readback >> 24) & 0xFF_FFFF) as u32,
-                jdx::COVER_POS_LEN => {
-                    f::COVER_WAITING.put(self.chain.cw(g) as u32)
-                        | f::COVER_POS.put((g.cover_pos as u32 + 1) & 63)
-                        | f::COVER_LEN.put(g.cover_len as u32)
-                }
-                jdx::COVER_DATAGRAM => g.cover_datagram,
-                jdx::IF_CONFIGURATION => g.ifconf,
-                jdx::POS_COMP => g.pos_comp,
-                jdx::POS_COMP_INT => f::POS_COMP_M.put(g.pc_m as u32) | f::POS_COMP_I.put(g.pc_i as u32),
-                jdx::TYPE_VERSION => TYPE_VERSION,
-                jdx::REF_SWITCHES => {
-                    let (l, r) = self.switches();
-                    let mut w = 0;
-                    for m in 0..3 {
-                        w |= (((r >> m) & 1) as u32) << (2 * m) | (((l >> m) & 1) as u32) << (2 * m + 1);
-                    }
-                    w
-                }
-                jdx::GLOBAL_PARAMETERS => g.gconf & reg.writable_mask(),
-                _ => 0,
-            },
+            Addr::Motor(_, i) => motor_read(&self.motors[motor.unwrap_or(0) as usize], i),
+            Addr::Global(j) => self.global_read(j, reg),
         }
     }
 
@@ -251,81 +200,144 @@ impl Tmc429 {
         self.pins_stale = true;
         match Addr::from_a7(a7) {
             Addr::Ram(a) => ram::write_word(&mut self.ram, a, data),
-            Addr::Motor(_, i) => {
-                let m = &mut self.motors[motor.unwrap_or(0) as usize];
-                match i {
-                    idx::X_TARGET => m.x_target = data,
-                    idx::X_ACTUAL => m.x_actual = data,
-                    idx::V_MIN => m.v_min = f::V_MIN.get(data) as u16,
-                    idx::V_MAX => m.v_max = f::V_MAX.get(data) as u16,
-                    idx::V_TARGET => m.v_target = f::V_TARGET.get(data) as u16,
-                    idx::V_ACTUAL => {
-                        // C23: V := w·256, −2048 as −2047.
-                        let w = (f::V_ACTUAL.value(data) as i32).max(-2047);
-                        m.v = w * 256;
-                    }
-                    idx::A_MAX => m.a_max = f::A_MAX.get(data) as u16,
-                    idx::A_ACTUAL => {}
-                    idx::CURRENT_SCALING => {
-                        m.is_agtat = f::IS_AGTAT.get(data) as u8;
-                        m.is_aleat = f::IS_ALEAT.get(data) as u8;
-                        m.is_v0 = f::IS_V0.get(data) as u8;
-                        m.a_threshold = f::A_THRESHOLD.get(data) as u16;
-                    }
-                    idx::PMUL_PDIV => {
-                        m.pmul = (f::PMUL.get(data) & 0x7F) as u8;
-                        m.pdiv = f::PDIV.get(data) as u8;
-                    }
-                    idx::REF_CONF_RM => {
-                        // the four ref_conf bits, disable_stop_l .. ref_rnl
-                        m.ref_conf = ((data >> f::DISABLE_STOP_L.lsb) & 0xF) as u8;
-                        m.rm = f::RM.get(data) as u8;
-                    }
-                    idx::INTERRUPT => {
-                        m.int_mask = f::INTERRUPT_MASK.get(data) as u8;
-                        m.int_flags &= !(f::INTERRUPT_FLAGS.get(data) as u8);
-                        m.int_flags &= m.int_mask;
-                    }
-                    idx::CLK_CONFIG => {
-                        m.pulse_div = f::PULSE_DIV.get(data) as u8;
-                        m.ramp_div = f::RAMP_DIV.get(data) as u8;
-                        m.usrs = f::USRS.get(data) as u8;
-                    }
-                    idx::DX_REF_TOLERANCE => m.dx_ref_tolerance = f::DX_REF_TOLERANCE.get(data) as u16,
-                    idx::X_LATCHED => m.lp = true,
-                    idx::USTEP_COUNT => m.ustep = f::USTEP_COUNT.get(data) as u8,
-                    _ => {}
-                }
-            }
-            Addr::Global(j) => {
-                let g = &mut self.global;
-                match j {
-                    jdx::DATAGRAM_LOW_WORD | jdx::DATAGRAM_HIGH_WORD => {
-                        // "A write to one of these read-only registers initializes them" (C87).
-                        self.chain.clear_readback();
-                        g.dgw = true;
-                    }
-                    jdx::COVER_POS_LEN => {
-                        g.cover_pos = f::COVER_POS.get(data) as u8;
-                        g.cover_len = f::COVER_LEN.get(data) as u8;
-                    }
-                    jdx::COVER_DATAGRAM => {
-                        g.cover_datagram = data;
-                        g.cw = true;
-                    }
-                    jdx::IF_CONFIGURATION => g.ifconf = data & reg.writable_mask(),
-                    jdx::POS_COMP => g.pos_comp = data,
-                    jdx::POS_COMP_INT => {
-                        g.pc_m = f::POS_COMP_M.get(data) != 0;
-                        if f::POS_COMP_I.get(data) != 0 || !g.pc_m {
-                            g.pc_i = false;
-                        }
-                    }
-                    jdx::POWER_DOWN => self.power_down = true,
-                    jdx::GLOBAL_PARAMETERS => g.gconf = data & reg.writable_mask(),
-                    _ => {}
-                }
-            }
+            Addr::Motor(_, i) => motor_write(&mut self.motors[motor.unwrap_or(0) as usize], i, data),
+            Addr::Global(j) => self.global_write(j, data, reg),
         }
+    }
+
+    /// The read value of global register JDX `j` (C29–C31, C64, C87).
+    fn global_read(&self, j: u8, reg: &Register) -> u32 {
+        let g = &self.global;
+        match j {
+            jdx::DATAGRAM_LOW_WORD => (self.chain.readback & 0xFF_FFFF) as u32,
+            jdx::DATAGRAM_HIGH_WORD => ((self.chain.readback >> 24) & 0xFF_FFFF) as u32,
+            jdx::COVER_POS_LEN => {
+                f::COVER_WAITING.put(self.chain.cw(g) as u32)
+                    | f::COVER_POS.put((g.cover_pos as u32 + 1) & 63)
+                    | f::COVER_LEN.put(g.cover_len as u32)
+            }
+            jdx::COVER_DATAGRAM => g.cover_datagram,
+            jdx::IF_CONFIGURATION => g.ifconf,
+            jdx::POS_COMP => g.pos_comp,
+            jdx::POS_COMP_INT => f::POS_COMP_M.put(g.pc_m as u32) | f::POS_COMP_I.put(g.pc_i as u32),
+            jdx::TYPE_VERSION => TYPE_VERSION,
+            jdx::REF_SWITCHES => {
+                let (l, r) = self.switches();
+                let mut w = 0;
+                for m in 0..3 {
+                    w |= (((r >> m) & 1) as u32) << (2 * m) | (((l >> m) & 1) as u32) << (2 * m + 1);
+                }
+                w
+            }
+            jdx::GLOBAL_PARAMETERS => g.gconf & reg.writable_mask(),
+            _ => 0,
+        }
+    }
+
+    /// A µC write of `data` to global register JDX `j`, with its side effects (C29–C31, C64,
+    /// C66, C87, C88).
+    fn global_write(&mut self, j: u8, data: u32, reg: &Register) {
+        let g = &mut self.global;
+        match j {
+            jdx::DATAGRAM_LOW_WORD | jdx::DATAGRAM_HIGH_WORD => {
+                // "A write to one of these read-only registers initializes them" (C87).
+                self.chain.clear_readback();
+                g.dgw = true;
+            }
+            jdx::COVER_POS_LEN => {
+                g.cover_pos = f::COVER_POS.get(data) as u8;
+                g.cover_len = f::COVER_LEN.get(data) as u8;
+            }
+            jdx::COVER_DATAGRAM => {
+                g.cover_datagram = data;
+                g.cw = true;
+            }
+            jdx::IF_CONFIGURATION => g.ifconf = data & reg.writable_mask(),
+            jdx::POS_COMP => g.pos_comp = data,
+            jdx::POS_COMP_INT => {
+                g.pc_m = f::POS_COMP_M.get(data) != 0;
+                if f::POS_COMP_I.get(data) != 0 || !g.pc_m {
+                    g.pc_i = false;
+                }
+            }
+            jdx::POWER_DOWN => self.power_down = true,
+            jdx::GLOBAL_PARAMETERS => g.gconf = data & reg.writable_mask(),
+            _ => {}
+        }
+    }
+}
+
+/// The read value of motor register IDX `i` of motor `m` (C21–C28).
+fn motor_read(m: &Motor, i: u8) -> u32 {
+    match i {
+        idx::X_TARGET => m.x_target,
+        idx::X_ACTUAL => m.x_actual,
+        idx::V_MIN => m.v_min as u32,
+        idx::V_MAX => m.v_max as u32,
+        idx::V_TARGET => m.v_target as u32,
+        idx::V_ACTUAL => f::V_ACTUAL.put(m.v_actual() as u32),
+        idx::A_MAX => m.a_max as u32,
+        idx::A_ACTUAL => f::A_ACTUAL.put(m.a_actual as u32),
+        idx::CURRENT_SCALING => {
+            f::IS_AGTAT.put(m.is_agtat as u32)
+                | f::IS_ALEAT.put(m.is_aleat as u32)
+                | f::IS_V0.put(m.is_v0 as u32)
+                | f::A_THRESHOLD.put(m.a_threshold as u32)
+        }
+        idx::PMUL_PDIV => f::PMUL.put(0x80 | m.pmul as u32) | f::PDIV.put(m.pdiv as u32),
+        idx::REF_CONF_RM => f::LP.put(m.lp as u32) | (m.ref_conf as u32) << f::DISABLE_STOP_L.lsb | f::RM.put(m.rm as u32),
+        idx::INTERRUPT => f::INTERRUPT_MASK.put(m.int_mask as u32) | f::INTERRUPT_FLAGS.put(m.int_flags as u32),
+        idx::CLK_CONFIG => f::PULSE_DIV.put(m.pulse_div as u32) | f::RAMP_DIV.put(m.ramp_div as u32) | f::USRS.put(m.usrs as u32),
+        idx::DX_REF_TOLERANCE => m.dx_ref_tolerance as u32,
+        idx::X_LATCHED => m.x_latched,
+        idx::USTEP_COUNT => m.ustep as u32,
+        _ => 0,
+    }
+}
+
+/// A µC write of `data` to motor register IDX `i` of motor `m`, with its side effects (C21–C28).
+fn motor_write(m: &mut Motor, i: u8, data: u32) {
+    match i {
+        idx::X_TARGET => m.x_target = data,
+        idx::X_ACTUAL => m.x_actual = data,
+        idx::V_MIN => m.v_min = f::V_MIN.get(data) as u16,
+        idx::V_MAX => m.v_max = f::V_MAX.get(data) as u16,
+        idx::V_TARGET => m.v_target = f::V_TARGET.get(data) as u16,
+        idx::V_ACTUAL => {
+            // C23: V := w·256, −2048 as −2047.
+            let w = (f::V_ACTUAL.value(data) as i32).max(-2047);
+            m.v = w * 256;
+        }
+        idx::A_MAX => m.a_max = f::A_MAX.get(data) as u16,
+        idx::A_ACTUAL => {}
+        idx::CURRENT_SCALING => {
+            m.is_agtat = f::IS_AGTAT.get(data) as u8;
+            m.is_aleat = f::IS_ALEAT.get(data) as u8;
+            m.is_v0 = f::IS_V0.get(data) as u8;
+            m.a_threshold = f::A_THRESHOLD.get(data) as u16;
+        }
+        idx::PMUL_PDIV => {
+            m.pmul = (f::PMUL.get(data) & 0x7F) as u8;
+            m.pdiv = f::PDIV.get(data) as u8;
+        }
+        idx::REF_CONF_RM => {
+            // the four ref_conf bits, disable_stop_l .. ref_rnl
+            m.ref_conf = ((data >> f::DISABLE_STOP_L.lsb) & 0xF) as u8;
+            m.rm = f::RM.get(data) as u8;
+        }
+        idx::INTERRUPT => {
+            m.int_mask = f::INTERRUPT_MASK.get(data) as u8;
+            m.int_flags &= !(f::INTERRUPT_FLAGS.get(data) as u8);
+            m.int_flags &= m.int_mask;
+        }
+        idx::CLK_CONFIG => {
+            m.pulse_div = f::PULSE_DIV.get(data) as u8;
+            m.ramp_div = f::RAMP_DIV.get(data) as u8;
+            m.usrs = f::USRS.get(data) as u8;
+        }
+        idx::DX_REF_TOLERANCE => m.dx_ref_tolerance = f::DX_REF_TOLERANCE.get(data) as u16,
+        idx::X_LATCHED => m.lp = true,
+        idx::USTEP_COUNT => m.ustep = f::USTEP_COUNT.get(data) as u8,
+        _ => {}
     }
 }

@@ -68,9 +68,8 @@ impl StepDir {
 
     /// One CLK edge for `n` motors. `enabled`: Step/Dir mode (C91); while disabled the unit is
     /// held in its reset state and steps are not output. Returns true when a pin level changed.
-    #[inline]
     /// `now`: index of this edge (any monotonic edge count).
-    #[allow(clippy::too_many_arguments)]
+    #[inline]
     pub fn tick(&mut self, now: u64, enabled: bool, n: usize, motors: &[Motor; 3], clk2_div: u32, step_half: bool) -> bool {
         if !enabled {
             if self.busy != 0 || self.step != [false; 3] || self.dir != [false; 3] {
@@ -84,70 +83,13 @@ impl StepDir {
             // Only counters run: cnt[i] is implicit until `next` (the RTL decrements it).
             return false;
         }
-        // Bring the implicit counters up to date: cnt[i] −= (now − 1 − last) for busy motors.
-        let elapsed = now.wrapping_sub(self.last).wrapping_sub(1);
-        if elapsed != 0 {
-            for i in 0..n {
-                if self.state[i] != READY {
-                    self.cnt[i] = (self.cnt[i] as u64).saturating_sub(elapsed).max(1) as u16;
-                }
-            }
-        }
-        self.last = now;
+        self.catch_up(now, n);
         let t = t_step(clk2_div);
         let (step_old, dir_old) = (self.step, self.dir);
-        for i in 0..n {
-            let mo = &motors[i];
-            if (self.busy | steps) >> i & 1 == 0 {
-                continue;
+        for (i, mo) in motors.iter().enumerate().take(n) {
+            if (self.busy | steps) >> i & 1 != 0 {
+                self.motor_edge(i, mo, t, step_half);
             }
-            if self.state[i] != READY && self.cnt[i] > 1 && !mo.step {
-                self.cnt[i] -= 1;
-                continue;
-            }
-            let inc = if mo.step {
-                if mo.dir {
-                    -1
-                } else {
-                    1
-                }
-            } else {
-                0
-            };
-            let backlog = wrap24(self.backlog[i] + inc);
-            let ready = match self.state[i] {
-                READY => true,
-                _ if self.cnt[i] > 1 => {
-                    self.cnt[i] -= 1;
-                    false
-                }
-                PULSE if !step_half => {
-                    self.step[i] = false;
-                    self.state[i] = SPACE;
-                    self.cnt[i] = t;
-                    false
-                }
-                _ => true,
-            };
-            self.backlog[i] = backlog;
-            if ready {
-                self.state[i] = READY;
-                if backlog != 0 {
-                    let neg = backlog < 0;
-                    if neg != self.dir[i] {
-                        // C94: DIR changes, the step follows t_DIR2STP = t_STEP later.
-                        self.dir[i] = neg;
-                        self.state[i] = DIRSET;
-                    } else {
-                        self.step[i] = if step_half { !self.step[i] } else { true };
-                        self.backlog[i] = wrap24(backlog - if neg { -1 } else { 1 });
-                        self.state[i] = PULSE;
-                    }
-                    self.cnt[i] = t;
-                }
-            }
-            let idle = self.state[i] == READY && self.backlog[i] == 0;
-            self.busy = (self.busy & !(1 << i)) | ((!idle as u8) << i);
         }
         // Earliest edge with work: READY with a backlog → next edge; else when cnt reaches 1.
         let mut next = u64::MAX;
@@ -159,6 +101,71 @@ impl StepDir {
         }
         self.next = next;
         self.step != step_old || self.dir != dir_old
+    }
+
+    /// Brings the implicit counters up to date before edge `now`: cnt[i] −= (now − 1 − last)
+    /// for the busy motors (the RTL decrements them in every edge).
+    #[inline]
+    fn catch_up(&mut self, now: u64, n: usize) {
+        let elapsed = now.wrapping_sub(self.last).wrapping_sub(1);
+        if elapsed != 0 {
+            for i in 0..n {
+                if self.state[i] != READY {
+                    self.cnt[i] = (self.cnt[i] as u64).saturating_sub(elapsed).max(1) as u16;
+                }
+            }
+        }
+        self.last = now;
+    }
+
+    /// One edge of motor `i`'s unit with the motion core's step of the old state `mo` (C95):
+    /// the backlog takes the step; in READY (or at the end of a SPACE or DIRSET phase) a
+    /// nonzero backlog starts a DIR change (C94) or a STEP pulse of T = `t` edges (C93).
+    #[inline]
+    fn motor_edge(&mut self, i: usize, mo: &Motor, t: u16, step_half: bool) {
+        if self.state[i] != READY && self.cnt[i] > 1 && !mo.step {
+            self.cnt[i] -= 1;
+            return;
+        }
+        let inc = match (mo.step, mo.dir) {
+            (false, _) => 0,
+            (true, false) => 1,
+            (true, true) => -1,
+        };
+        let backlog = wrap24(self.backlog[i] + inc);
+        let ready = match self.state[i] {
+            READY => true,
+            _ if self.cnt[i] > 1 => {
+                self.cnt[i] -= 1;
+                false
+            }
+            PULSE if !step_half => {
+                self.step[i] = false;
+                self.state[i] = SPACE;
+                self.cnt[i] = t;
+                false
+            }
+            _ => true,
+        };
+        self.backlog[i] = backlog;
+        if ready {
+            self.state[i] = READY;
+            if backlog != 0 {
+                let neg = backlog < 0;
+                if neg != self.dir[i] {
+                    // C94: DIR changes, the step follows t_DIR2STP = t_STEP later.
+                    self.dir[i] = neg;
+                    self.state[i] = DIRSET;
+                } else {
+                    self.step[i] = if step_half { !self.step[i] } else { true };
+                    self.backlog[i] = wrap24(backlog - if neg { -1 } else { 1 });
+                    self.state[i] = PULSE;
+                }
+                self.cnt[i] = t;
+            }
+        }
+        let idle = self.state[i] == READY && self.backlog[i] == 0;
+        self.busy = (self.busy & !(1 << i)) | ((!idle as u8) << i);
     }
 
     /// (STEP, DIR) pin levels of motor `m` with inv_stp / inv_dir (C93).
