@@ -55,7 +55,24 @@ fn main() {
     let _ = fs::remove_dir_all(&mdir);
     fs::create_dir_all(&mdir).expect("create Verilator output directory");
 
-    let mut sources: Vec<PathBuf> = fs::read_dir(&rtl_dir)
+    let sources = rtl_sources(&rtl_dir);
+    let (generated, falling_edge_flag) = verilate(&verilator, &rtl_dir, &mdir, &sources);
+    let (objects, clang) = compile_models(&generated, &mdir);
+    compile_bridge(&objects, &mdir, falling_edge_flag);
+    println!("cargo:rustc-link-lib=pthread");
+    if clang {
+        // clang calls libatomic where GCC inlines (Verilator's runtime: `__atomic_is_lock_free`)
+        println!("cargo:rustc-link-lib=atomic");
+    }
+}
+
+/// The defines Verilator's models and runtime are compiled with.
+const VL_DEFINES: [(&str, &str); 6] =
+    [("VM_COVERAGE", "0"), ("VM_SC", "0"), ("VM_TRACE", "1"), ("VM_TRACE_VCD", "1"), ("VM_TRACE_FST", "0"), ("VM_TIMING", "0")];
+
+/// The RTL's module files (`rtl/tmc429_*.v`, sorted), with the files a change of which rebuilds.
+fn rtl_sources(rtl_dir: &Path) -> Vec<PathBuf> {
+    let mut sources: Vec<PathBuf> = fs::read_dir(rtl_dir)
         .unwrap_or_else(|e| panic!("cannot read {}: {e}", rtl_dir.display()))
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "v") && p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("tmc429_")))
@@ -72,51 +89,49 @@ fn main() {
     println!("cargo:rerun-if-changed=cpp/rtl_bridge.h");
     println!("cargo:rerun-if-changed=cpp/rtl_bridge.cc");
     println!("cargo:rerun-if-changed=src/rtl.rs");
+    sources
+}
 
+/// Verilates every variant, untraced and traced, into `mdir`: the generated C++ files, and
+/// whether every untraced model keeps its clock's previous value in `__Vtrigrprev__TOP__clk`
+/// (Verilator 5.006; then the bridge applies the falling edge without an eval).
+fn verilate(verilator: &str, rtl_dir: &Path, mdir: &Path, sources: &[PathBuf]) -> (Vec<PathBuf>, bool) {
     let mut generated = Vec::new();
-    // whether every untraced model keeps its clock's previous value in `__Vtrigrprev__TOP__clk`
-    // (Verilator 5.006); then the bridge applies the falling edge without an eval
     let mut falling_edge_flag = true;
     for (base, chip, defines) in VARIANTS {
         for traced in [false, true] {
             let prefix = if traced { format!("{base}_tr") } else { base.to_string() };
-            let mut cmd = Command::new(&verilator);
+            let mut cmd = Command::new(verilator);
             cmd.arg("--cc");
             if traced {
                 cmd.arg("--trace");
             }
-            cmd.arg("-O3")
-                .arg("-Wno-fatal")
-                .arg("--x-assign")
-                .arg("fast")
-                .arg("--x-initial")
-                .arg("fast")
-                .arg("--top-module")
-                .arg("tmc429_top")
+            cmd.args(["-O3", "-Wno-fatal", "--x-assign", "fast", "--x-initial", "fast", "--top-module", "tmc429_top"])
                 .arg(format!("-GCHIP={chip}"))
                 .arg("--prefix")
                 .arg(&prefix)
                 .arg("-Mdir")
-                .arg(&mdir)
+                .arg(mdir)
                 .arg(format!("-I{}", rtl_dir.display()));
             for d in *defines {
                 cmd.arg(format!("-D{d}"));
             }
-            cmd.args(&sources);
+            cmd.args(sources);
             let status = cmd.status().unwrap_or_else(|e| panic!("cannot run `{verilator}` ({e}); install Verilator 5 (scripts/setup)"));
             assert!(status.success(), "verilator failed for {prefix}");
             if !traced {
-                falling_edge_flag &= has_trigger_flag(&mdir, &prefix);
+                falling_edge_flag &= has_trigger_flag(mdir, &prefix);
             }
-            generated.extend(generated_sources(&mdir, &prefix));
+            generated.extend(generated_sources(mdir, &prefix));
         }
     }
+    (generated, falling_edge_flag)
+}
 
+/// The models and Verilator's runtime with clang++ at -O2, else at -O1 (see the top of this
+/// file), as objects of the bridge's library; and whether the compiler is clang.
+fn compile_models(generated: &[PathBuf], mdir: &Path) -> (Vec<PathBuf>, bool) {
     let inc = Path::new(VERILATOR_INCLUDE);
-    let defines =
-        [("VM_COVERAGE", "0"), ("VM_SC", "0"), ("VM_TRACE", "1"), ("VM_TRACE_VCD", "1"), ("VM_TRACE_FST", "0"), ("VM_TIMING", "0")];
-    // The models and Verilator's runtime with clang++ at -O2, else at -O1 (see the top of this
-    // file), as objects of the bridge's library.
     let compiler = model_compiler();
     let mut models = cc::Build::new();
     match &compiler.cxx {
@@ -134,11 +149,11 @@ fn main() {
     }
     models
         .cpp(true)
-        .files(&generated)
+        .files(generated)
         .file(inc.join("verilated.cpp"))
         .file(inc.join("verilated_threads.cpp"))
         .file(inc.join("verilated_vcd_c.cpp"))
-        .include(&mdir)
+        .include(mdir)
         .include(inc)
         .include(inc.join("vltstd"))
         .std("c++17")
@@ -147,16 +162,21 @@ fn main() {
         .warnings(false)
         .flag_if_supported("-faligned-new")
         .flag_if_supported("-fno-math-errno");
-    for (k, v) in defines {
+    for (k, v) in VL_DEFINES {
         models.define(k, v);
     }
-    let objects = models.compile_intermediates();
+    (models.compile_intermediates(), compiler.clang)
+}
 
+/// The cxx bridge (src/rtl.rs, cpp/rtl_bridge.cc) with the models' objects, as the library
+/// `tmc429_vrtl`.
+fn compile_bridge(objects: &[PathBuf], mdir: &Path, falling_edge_flag: bool) {
+    let inc = Path::new(VERILATOR_INCLUDE);
     let mut build = cxx_build::bridge("src/rtl.rs");
     build
         .file("cpp/rtl_bridge.cc")
-        .objects(&objects)
-        .include(&mdir)
+        .objects(objects)
+        .include(mdir)
         .include(inc)
         .include(inc.join("vltstd"))
         .std("c++17")
@@ -165,16 +185,11 @@ fn main() {
         .warnings(false)
         .flag_if_supported("-faligned-new")
         .flag_if_supported("-fno-math-errno");
-    for (k, v) in defines {
+    for (k, v) in VL_DEFINES {
         build.define(k, v);
     }
     build.define("TMC429_VL_TRIGRPREV", if falling_edge_flag { "1" } else { "0" });
     build.compile("tmc429_vrtl");
-    println!("cargo:rustc-link-lib=pthread");
-    if compiler.clang {
-        // clang calls libatomic where GCC inlines (Verilator's runtime: `__atomic_is_lock_free`)
-        println!("cargo:rustc-link-lib=atomic");
-    }
 }
 
 /// The C++ compiler of the Verilated models.
