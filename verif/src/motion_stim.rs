@@ -58,6 +58,31 @@ impl Stimulus {
     /// The next transaction of the motion profile (pending sequences first, by the caller).
     pub(crate) fn motion_txn(&mut self) -> Txn {
         debug_assert!(matches!(self.profile, Profile::Motion | Profile::MotionCore));
+        let kind = self.kind();
+        let seq = match kind {
+            Kind::Random => {
+                let f = self.draw(crate::stimulus::frame_strategy(self.chip));
+                vec![Txn::Frame(f)]
+            }
+            Kind::Move => self.move_seq(),
+            Kind::Retarget => self.retarget_seq(),
+            Kind::ModeChange => self.mode_change_seq(),
+            Kind::RefSearch => self.ref_search_seq(),
+            Kind::CurrentScale => self.current_scale_seq(),
+            Kind::Chain => self.chain_seq(),
+            Kind::Cover => self.cover_seq(),
+            Kind::StepDir => self.step_dir_seq(),
+            Kind::Idle => {
+                vec![Txn::Idle(self.draw(prop_oneof![2 => 64u32..4000, 2 => 4000u32..40_000, 1 => 40_000u32..200_000]))]
+            }
+            Kind::Other => vec![self.register_txn()],
+        };
+        self.push_seq(seq)
+    }
+
+    /// The kind of the next sequence, drawn by weight (the driver chain's and Step/Dir's only
+    /// where the chip has them).
+    fn kind(&mut self) -> Kind {
         let chain = self.chip != Chip::Tmc4210;
         let step_dir = self.chip != Chip::Tmc428;
         let weights = [
@@ -83,65 +108,62 @@ impl Stimulus {
             }
             x -= wt;
         }
-        let seq = match kind {
-            Kind::Random => {
-                let f = self.draw(crate::stimulus::frame_strategy(self.chip));
-                vec![Txn::Frame(f)]
-            }
-            Kind::Move => self.move_seq(),
-            Kind::Retarget => {
-                let m = self.motor();
-                let d = self.draw(prop_oneof![3 => -2000i32..2000, 1 => -200_000i32..200_000]);
-                let t = self.targets[m as usize].wrapping_add(d as u32) & 0xFF_FFFF;
-                self.targets[m as usize] = t;
-                vec![w(ma7(m, idx::X_TARGET), t)]
-            }
-            Kind::ModeChange => {
-                let m = self.motor();
-                let rm = self.draw(0u32..4);
-                let conf = self.draw(0u32..16);
-                let mut s = vec![w(ma7(m, idx::REF_CONF_RM), conf << 8 | rm)];
-                if rm == VELOCITY_MODE as u32 {
-                    let v = self.draw(prop_oneof![3 => -300i32..300, 1 => -2048i32..2048]);
-                    s.push(w(ma7(m, idx::V_TARGET), v as u32 & 0xFFF));
-                }
-                s
-            }
-            Kind::RefSearch => self.ref_search_seq(),
-            Kind::CurrentScale => {
-                let m = self.motor();
-                let (a, b, c) = (self.draw(0u32..8), self.draw(0u32..8), self.draw(0u32..8));
-                let th = self.draw(prop_oneof![3 => 0u32..64, 1 => 0u32..2048]);
-                vec![w(ma7(m, idx::CURRENT_SCALING), f::IS_AGTAT.put(a) | f::IS_ALEAT.put(b) | f::IS_V0.put(c) | f::A_THRESHOLD.put(th))]
-            }
-            Kind::Chain => self.chain_seq(),
-            Kind::Cover => {
-                let pos = self.draw(prop_oneof![3 => 0u32..48, 1 => 0u32..64]);
-                let len = self.draw(prop_oneof![3 => 1u32..25, 1 => 0u32..32]);
-                let data = self.draw(0u32..0x100_0000);
-                vec![
-                    w(ga7(jdx::COVER_POS_LEN), f::COVER_POS.put(pos) | f::COVER_LEN.put(len)),
-                    w(ga7(jdx::COVER_DATAGRAM), data),
-                    r(ga7(jdx::COVER_POS_LEN)),
-                ]
-            }
-            Kind::StepDir => {
-                let en = self.draw(prop_oneof![3 => Just(true), 1 => Just(false)]);
-                let bits = self.draw(0u32..0x20) & !0x2; // keep sdo_int as the profile found it
-                let sel = self.draw(0u32..4);
-                let stpdiv = self.draw(prop_oneof![3 => 0u32..3, 1 => 0u32..16]);
-                let gconf = f::CLK2_DIV.put(stpdiv) | f::LSMD.put(2);
-                vec![
-                    w(ga7(jdx::GLOBAL_PARAMETERS), gconf),
-                    w(ga7(jdx::IF_CONFIGURATION), bits & 0x1D | f::EN_SD.put(en as u32) | f::POS_COMP_SEL.put(sel)),
-                ]
-            }
-            Kind::Idle => {
-                vec![Txn::Idle(self.draw(prop_oneof![2 => 64u32..4000, 2 => 4000u32..40_000, 1 => 40_000u32..200_000]))]
-            }
-            Kind::Other => vec![self.register_txn()],
-        };
-        self.push_seq(seq)
+        kind
+    }
+
+    /// A new x_target near the last one (or farther) for a motor.
+    fn retarget_seq(&mut self) -> Vec<Txn> {
+        let m = self.motor();
+        let d = self.draw(prop_oneof![3 => -2000i32..2000, 1 => -200_000i32..200_000]);
+        let t = self.targets[m as usize].wrapping_add(d as u32) & 0xFF_FFFF;
+        self.targets[m as usize] = t;
+        vec![w(ma7(m, idx::X_TARGET), t)]
+    }
+
+    /// A ramp mode and ref_conf for a motor; VELOCITY_MODE with a v_target.
+    fn mode_change_seq(&mut self) -> Vec<Txn> {
+        let m = self.motor();
+        let rm = self.draw(0u32..4);
+        let conf = self.draw(0u32..16);
+        let mut s = vec![w(ma7(m, idx::REF_CONF_RM), conf << 8 | rm)];
+        if rm == VELOCITY_MODE as u32 {
+            let v = self.draw(prop_oneof![3 => -300i32..300, 1 => -2048i32..2048]);
+            s.push(w(ma7(m, idx::V_TARGET), v as u32 & 0xFFF));
+        }
+        s
+    }
+
+    /// The current scales and a_threshold of a motor.
+    fn current_scale_seq(&mut self) -> Vec<Txn> {
+        let m = self.motor();
+        let (a, b, c) = (self.draw(0u32..8), self.draw(0u32..8), self.draw(0u32..8));
+        let th = self.draw(prop_oneof![3 => 0u32..64, 1 => 0u32..2048]);
+        vec![w(ma7(m, idx::CURRENT_SCALING), f::IS_AGTAT.put(a) | f::IS_ALEAT.put(b) | f::IS_V0.put(c) | f::A_THRESHOLD.put(th))]
+    }
+
+    /// A cover datagram: position, length, data, and the position read back.
+    fn cover_seq(&mut self) -> Vec<Txn> {
+        let pos = self.draw(prop_oneof![3 => 0u32..48, 1 => 0u32..64]);
+        let len = self.draw(prop_oneof![3 => 1u32..25, 1 => 0u32..32]);
+        let data = self.draw(0u32..0x100_0000);
+        vec![
+            w(ga7(jdx::COVER_POS_LEN), f::COVER_POS.put(pos) | f::COVER_LEN.put(len)),
+            w(ga7(jdx::COVER_DATAGRAM), data),
+            r(ga7(jdx::COVER_POS_LEN)),
+        ]
+    }
+
+    /// Step/Dir on or off, with its bits of if_configuration and the step divider.
+    fn step_dir_seq(&mut self) -> Vec<Txn> {
+        let en = self.draw(prop_oneof![3 => Just(true), 1 => Just(false)]);
+        let bits = self.draw(0u32..0x20) & !0x2; // keep sdo_int as the profile found it
+        let sel = self.draw(0u32..4);
+        let stpdiv = self.draw(prop_oneof![3 => 0u32..3, 1 => 0u32..16]);
+        let gconf = f::CLK2_DIV.put(stpdiv) | f::LSMD.put(2);
+        vec![
+            w(ga7(jdx::GLOBAL_PARAMETERS), gconf),
+            w(ga7(jdx::IF_CONFIGURATION), bits & 0x1D | f::EN_SD.put(en as u32) | f::POS_COMP_SEL.put(sel)),
+        ]
     }
 
     fn push_seq(&mut self, mut seq: Vec<Txn>) -> Txn {

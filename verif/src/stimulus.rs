@@ -6,7 +6,13 @@ use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
-use tmc429_model::{Chip, Inputs};
+use tmc429_model::Chip;
+
+mod driver;
+mod drivers;
+
+pub use driver::{Driver, Event, Phase};
+pub use drivers::driver_sequence;
 
 /// Minimum SCK_C half period, nSCS_C setup and hold, in CLK cycles ([428] Table 6-1).
 pub const MIN_HALF: u32 = 3;
@@ -211,128 +217,6 @@ pub fn sanitize_drivers(f: &mut Frame) {
     f.datagram = (f.datagram & 0xFF00_0000) | (new_data & 0xFF_FFFF);
 }
 
-/// One driver-chain configuration cell: code (bits 4..0) and NxM (bit 5).
-fn cell(code: u8, nxm: bool) -> u8 {
-    (code & 0x1F) | (nxm as u8) << 5
-}
-
-/// RAM word writes for configuration cells 0..: a7 = $40 + word, odd cell in bits 13..8.
-fn ram_config_writes(cells: &[u8]) -> Vec<Txn> {
-    cells
-        .chunks(2)
-        .enumerate()
-        .map(|(w, p)| {
-            let odd = p.get(1).copied().unwrap_or(0) as u32;
-            Txn::Frame(Frame::write(0x40 | w as u8, odd << 8 | p[0] as u32))
-        })
-        .collect()
-}
-
-/// A directed driver-side sequence for [`Profile::Drivers`], drawn from `pick` (a value per
-/// call: `pick(n)` in 0..n).
-pub fn driver_sequence(chip: Chip, pick: &mut dyn FnMut(u32) -> u32) -> Vec<Txn> {
-    let w = |a7: u8, d: u32| Txn::Frame(Frame::write(a7, d));
-    let mut seq = Vec::new();
-    let spi_chip = chip != Chip::Tmc4210;
-    match pick(9) {
-        0 | 1 if spi_chip => {
-            // A configuration: TMC428 Table 11-2 (three 12-bit drivers) or a random valid chain
-            // of lsmd + 1 drivers, each 1..12 cells with NxM on its last cell.
-            let lsmd = pick(4);
-            let cells: Vec<u8> = if pick(2) == 0 {
-                tmc429_model::ram::TABLE_11_2.to_vec()
-            } else {
-                let mut v = Vec::new();
-                for _ in 0..=lsmd.min(2) {
-                    let n = 1 + pick(12);
-                    for k in 0..n {
-                        v.push(cell(pick(32) as u8, k == n - 1));
-                    }
-                }
-                v
-            };
-            seq.extend(ram_config_writes(&cells));
-            let clk2 = if pick(4) == 0 { pick(256) } else { pick(16) };
-            seq.push(w(0x3F, pick(8) << 4 | clk2 << 8 | pick(2) << 16 | pick(2) << 20 | lsmd));
-        }
-        2 if spi_chip => {
-            // Polarities, csCommonIndividual, LSMD, refmux, continuous_update.
-            let gp = pick(256);
-            let clk2 = if pick(3) == 0 { pick(256) } else { pick(16) };
-            seq.push(w(0x3F, gp | clk2 << 8 | pick(2) << 16 | pick(2) << 20 | pick(2) << 21));
-        }
-        3 if spi_chip => {
-            // A cover datagram: position, length, data; sometimes a second one at once.
-            let pos = if pick(4) == 0 { 63 } else { pick(64) };
-            seq.push(w(0x32, pos << 8 | pick(32)));
-            seq.push(w(0x33, pick(1 << 24)));
-            if pick(3) == 0 {
-                seq.push(w(0x33, pick(1 << 24)));
-            }
-            seq.push(Txn::Frame(Frame::read(0x32)));
-        }
-        4 => {
-            // Microstep indices (TMC429 IDX 15), current scales and short ramp_div.
-            for m in 0..motors(chip) as u8 {
-                if pick(2) == 0 {
-                    seq.push(w(m << 4 | 15, pick(256)));
-                }
-                if pick(3) == 0 {
-                    seq.push(w(m << 4 | 8, pick(1 << 24)));
-                }
-                if pick(3) == 0 {
-                    seq.push(w(m << 4 | 12, pick(3) << 8 | pick(8)));
-                }
-            }
-            if spi_chip && pick(2) == 0 {
-                seq.push(w(0x33, pick(1 << 24))); // request a datagram with them
-            }
-        }
-        5 if chip != Chip::Tmc428 => {
-            // Step/Dir bits of if_configuration: en_sd, step_half, inv_stp, inv_dir (inv_ref,
-            // sdo_int, pos_comp_sel, en_refr random); en_sd = 1 in one of three. On the TMC429
-            // sometimes while a datagram is under way (C89: it is aborted).
-            if chip == Chip::Tmc429 && pick(2) == 0 {
-                seq.push(w(0x34, pick(512) & !0x20));
-                seq.push(w(0x3F, pick(8) << 8 | pick(4)));
-                seq.push(w(0x33, pick(1 << 24)));
-                seq.push(Txn::Idle(pick(400)));
-            }
-            let en_sd = if pick(3) == 0 { 0x20 } else { 0 };
-            seq.push(w(0x34, (pick(512) & !0x20) | en_sd));
-            seq.push(w(0x3F, pick(2) << 16 | pick(16) << 8 | pick(2) << 20));
-        }
-        8 if spi_chip && pick(4) == 0 => {
-            // No NxM bit anywhere: the datagram never ends (C84) and the bit counter saturates;
-            // then an NxM bit ends it.
-            let cells: Vec<u8> = (0..64).map(|_| cell(pick(32) as u8, false)).collect();
-            seq.extend(ram_config_writes(&cells));
-            seq.push(w(0x3F, pick(3) << 8 | pick(256) & 0xFC));
-            seq.push(w(0x33, pick(1 << 24)));
-            seq.push(Txn::Idle(3000 + pick(3000)));
-            let word = pick(32) as u8;
-            seq.push(w(0x40 | word, 0x20 << 8 | 0x20));
-        }
-        6 if spi_chip => {
-            // The readback and CDGW: a datagram-word write, then the words read.
-            seq.push(w(0x30 | pick(2) as u8, pick(1 << 24)));
-            seq.push(w(0x33, pick(1 << 24)));
-            seq.push(Txn::Idle(200 + pick(4000)));
-            seq.push(Txn::Frame(Frame::read(0x30)));
-            seq.push(Txn::Frame(Frame::read(0x31)));
-        }
-        _ => {
-            // Let the chain run: wait, read the switches.
-            seq.push(Txn::Idle(100 + pick(5000)));
-            seq.push(Txn::Frame(Frame::read(0x3E)));
-        }
-    }
-    if seq.is_empty() {
-        seq.push(Txn::Idle(1 + pick(500)));
-    }
-    seq
-}
-
 /// Transactions that bring a fresh chip into the state a profile assumes.
 pub fn prologue(chip: Chip, profile: Profile) -> Vec<Txn> {
     match profile {
@@ -481,18 +365,7 @@ impl Stimulus {
                 sanitize(self.profile, &mut f);
                 Txn::Frame(f)
             }
-            Kind::Pins => {
-                let (which, random, hold) = self.draw(pins_strategy());
-                let mut l = self.levels;
-                match which {
-                    0..=2 => l.ref_[which as usize] = !l.ref_[which as usize],
-                    3..=5 => l.refr[which as usize - 3] = !l.refr[which as usize - 3],
-                    6 => l.sdi_s = !l.sdi_s,
-                    _ => l = random,
-                }
-                self.levels = l;
-                Txn::Pins { levels: l, hold }
-            }
+            Kind::Pins => self.pins_txn(),
             Kind::Idle => Txn::Idle(self.draw(prop_oneof![3 => 1u32..64, 1 => 64u32..3000])),
             Kind::PowerDown => {
                 // power_down (JDX 8), then a while asleep; the next frame wakes the chip
@@ -509,161 +382,45 @@ impl Stimulus {
                 self.pending.extend(seq);
                 first
             }
-            Kind::Meet => {
-                // A directed sequence: a motor's x_actual moves onto x_target and onto
-                // pos_comp (POS_END, REF_MISS at 0, position compare), then the flags are read.
-                let m = self.draw(0..motors(self.chip) as u8);
-                let v = self.draw(prop_oneof![1 => Just(0u32), 3 => 0u32..0x100_0000]);
-                let mask = self.draw(any::<u8>()) as u32;
-                let w = |a7: u8, d: u32| Txn::Frame(Frame::write(a7, d));
-                let mut seq = vec![w(m << 4 | 11, mask << 8 | 0xFF), w(m << 4, (v + 1) & 0xFF_FFFF), w(m << 4 | 1, v ^ 0x40)];
-                if self.chip != Chip::Tmc428 {
-                    seq.push(w(0x36, 0x100)); // pos_comp_int: M = 1
-                    seq.push(w(0x35, v)); // pos_comp
-                }
-                seq.push(w(m << 4 | 1, v)); // x_actual = pos_comp
-                seq.push(w(m << 4, v)); // x_target = x_actual
-                seq.push(Txn::Frame(Frame::read(m << 4 | 11)));
-                if self.chip != Chip::Tmc428 {
-                    seq.push(Txn::Frame(Frame::read(0x36)));
-                }
-                let first = seq.remove(0);
-                self.pending.extend(seq);
-                first
-            }
-        }
-    }
-}
-
-/// Where the driver is inside a transaction.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Phase {
-    /// Between transactions or in a pin change or idle time.
-    Idle,
-    /// nSCS_C low before the first SCK_C edge.
-    Setup,
-    /// SCK_C low for bit `n`.
-    Low(u8),
-    /// SCK_C high for bit `n` (the µC samples SDO_C when entering this phase).
-    High(u8),
-    Hold,
-    Gap,
-}
-
-/// Turns transactions into pin levels, one [`Inputs`] per CLK cycle.
-pub struct Driver {
-    pub inputs: Inputs,
-    phase: Phase,
-    left: u32,
-    frame: Option<Frame>,
-}
-
-/// What happened in the cycle just driven.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Event {
-    None,
-    /// SCK_C rises now for bit `n`: sample SDO_C (the level before this edge).
-    Sample(u8),
-    /// The frame's nSCS_C rises now.
-    FrameEnd(Frame),
-}
-
-impl Default for Driver {
-    fn default() -> Self {
-        Driver { inputs: Inputs::default(), phase: Phase::Idle, left: 0, frame: None }
-    }
-}
-
-impl Driver {
-    /// True when the current transaction is finished and a new one can start.
-    pub fn ready(&self) -> bool {
-        self.left == 0 && matches!(self.phase, Phase::Idle | Phase::Gap)
-    }
-
-    pub fn phase(&self) -> Phase {
-        self.phase
-    }
-
-    pub fn frame(&self) -> Option<&Frame> {
-        self.frame.as_ref()
-    }
-
-    /// Starts a transaction (call only when [`Driver::ready`]).
-    pub fn start(&mut self, t: Txn) {
-        match t {
-            Txn::Frame(f) => {
-                self.frame = Some(f);
-                self.phase = Phase::Setup;
-                self.left = f.setup.max(1);
-                self.inputs.nscs_c = false;
-                self.inputs.sck_c = true;
-            }
-            Txn::Pins { levels, hold } => {
-                self.phase = Phase::Idle;
-                self.left = hold.max(1);
-                let i = &mut self.inputs;
-                i.ref1 = levels.ref_[0];
-                i.ref2 = levels.ref_[1];
-                i.ref3 = levels.ref_[2];
-                i.refr1 = levels.refr[0];
-                i.refr2 = levels.refr[1];
-                i.refr3 = levels.refr[2];
-                i.sdi_s = levels.sdi_s;
-            }
-            Txn::Idle(n) => {
-                self.phase = Phase::Idle;
-                self.left = n.max(1);
-            }
+            Kind::Meet => self.meet_txn(),
         }
     }
 
-    /// Advances one cycle; returns the inputs for this cycle and what happened.
-    #[inline]
-    pub fn step(&mut self) -> (Inputs, Event) {
-        let mut ev = Event::None;
-        if self.left == 0 {
-            // phase over: move on
-            if let Some(f) = self.frame {
-                match self.phase {
-                    Phase::Setup => self.enter_low(&f, 0),
-                    Phase::Low(n) => {
-                        self.phase = Phase::High(n);
-                        self.left = f.half;
-                        self.inputs.sck_c = true;
-                        ev = Event::Sample(n);
-                    }
-                    Phase::High(n) => {
-                        if (n as u32 + 1) < f.nbits as u32 {
-                            self.enter_low(&f, n + 1);
-                        } else {
-                            self.phase = Phase::Hold;
-                            self.left = f.hold.max(1);
-                        }
-                    }
-                    Phase::Hold => {
-                        self.phase = Phase::Gap;
-                        self.left = f.gap.max(1);
-                        self.inputs.nscs_c = true;
-                        ev = Event::FrameEnd(f);
-                    }
-                    Phase::Gap | Phase::Idle => {
-                        self.frame = None;
-                        self.phase = Phase::Idle;
-                    }
-                }
-            } else {
-                self.phase = Phase::Idle;
-            }
+    /// A switch or SDI_S pin toggled (or all levels drawn anew), held for a while.
+    fn pins_txn(&mut self) -> Txn {
+        let (which, random, hold) = self.draw(pins_strategy());
+        let mut l = self.levels;
+        match which {
+            0..=2 => l.ref_[which as usize] = !l.ref_[which as usize],
+            3..=5 => l.refr[which as usize - 3] = !l.refr[which as usize - 3],
+            6 => l.sdi_s = !l.sdi_s,
+            _ => l = random,
         }
-        self.left = self.left.saturating_sub(1);
-        (self.inputs, ev)
+        self.levels = l;
+        Txn::Pins { levels: l, hold }
     }
 
-    fn enter_low(&mut self, f: &Frame, n: u8) {
-        self.phase = Phase::Low(n);
-        self.left = f.half;
-        self.inputs.sck_c = false;
-        self.inputs.sdi_c = f.bit(n as u32);
+    /// A directed sequence: a motor's x_actual moves onto x_target and onto pos_comp (POS_END,
+    /// REF_MISS at 0, position compare), then the flags are read.
+    fn meet_txn(&mut self) -> Txn {
+        let m = self.draw(0..motors(self.chip) as u8);
+        let v = self.draw(prop_oneof![1 => Just(0u32), 3 => 0u32..0x100_0000]);
+        let mask = self.draw(any::<u8>()) as u32;
+        let w = |a7: u8, d: u32| Txn::Frame(Frame::write(a7, d));
+        let mut seq = vec![w(m << 4 | 11, mask << 8 | 0xFF), w(m << 4, (v + 1) & 0xFF_FFFF), w(m << 4 | 1, v ^ 0x40)];
+        if self.chip != Chip::Tmc428 {
+            seq.push(w(0x36, 0x100)); // pos_comp_int: M = 1
+            seq.push(w(0x35, v)); // pos_comp
+        }
+        seq.push(w(m << 4 | 1, v)); // x_actual = pos_comp
+        seq.push(w(m << 4, v)); // x_target = x_actual
+        seq.push(Txn::Frame(Frame::read(m << 4 | 11)));
+        if self.chip != Chip::Tmc428 {
+            seq.push(Txn::Frame(Frame::read(0x36)));
+        }
+        let first = seq.remove(0);
+        self.pending.extend(seq);
+        first
     }
 }
 
