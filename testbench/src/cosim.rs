@@ -4,7 +4,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use tmc429_model::Chip;
+use tmc429_model::{Chip, Inputs, Outputs, Probes};
 use tmc429_verif::lockstep::Reference;
 
 use crate::coverage::Coverage;
@@ -73,6 +73,20 @@ pub struct Outcome {
 }
 
 impl Outcome {
+    /// The outcome of a run of `cfg` before its first edge: nothing counted, no mismatch.
+    fn empty(cfg: &Config) -> Outcome {
+        Outcome {
+            variant: cfg.variant,
+            seed: cfg.seed,
+            cycles: 0,
+            frames: 0,
+            pin_changes: 0,
+            mismatch: None,
+            coverage: Coverage::default(),
+            vcd_files: Vec::new(),
+        }
+    }
+
     pub fn mismatches(&self) -> u64 {
         self.mismatch.is_some() as u64
     }
@@ -118,53 +132,33 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
     // Verilator's trace code slows every cycle: only the traced run uses the model that has it
     let mut rtl = if trace.is_some() { Rtl::try_new_traced(cfg.variant)? } else { Rtl::try_new(cfg.variant)? };
     let mut side = Reference::new(chip, cfg.profile, cfg.seed);
-    let mut out = Outcome {
-        variant: cfg.variant,
-        seed: cfg.seed,
-        cycles: 0,
-        frames: 0,
-        pin_changes: 0,
-        mismatch: None,
-        coverage: Coverage::default(),
-        vcd_files: Vec::new(),
-    };
+    let mut out = Outcome::empty(cfg);
     let mut ro = rtl.outputs();
 
     // the reset states must agree before the first edge
     let (mo, mp0, rp0) = (side.outputs(), side.model().probes(), rtl.probes());
     if !agree(cfg.compare, &mo, &mp0, &ro, &rp0) {
-        out.mismatch = Some(Mismatch { cycle: 0, diffs: diff(cfg.compare, &flatten(&mo, &mp0), &flatten(&ro, &rp0)), history: Vec::new() });
-        out.coverage = side.into_coverage();
-        return Ok(out);
+        let diffs = diff(cfg.compare, &flatten(&mo, &mp0), &flatten(&ro, &rp0));
+        return Ok(Outcome { mismatch: Some(Mismatch { cycle: 0, diffs, history: Vec::new() }), coverage: side.into_coverage(), ..out });
     }
 
-    let mut writer: Option<TraceWriter> = None;
+    let mut window = trace.map(|(path, from, to)| TraceWindow { path, from, to, writer: None });
     // cycles, frames and pin changes up to the first mismatch (the trace may run on)
     let mut counted = (0u64, 0u64, 0u64);
     let t_to = trace.map(|(_, _, b)| b).unwrap_or(0);
 
     for n in 0..cfg.cycles {
-        if let Some((path, from, _)) = trace {
-            if n == from {
-                let title = format!("tmc429 cosim {} seed {}: model and RTL", cfg.variant, cfg.seed);
-                writer = Some(TraceWriter::create(path, cfg.fclk, &title).map_err(|e| format!("{}: {e}", path.display()))?);
-                rtl.trace_open(&rtl_trace_path(path), cfg.fclk)?;
-            }
+        if let Some(w) = window.as_mut() {
+            w.open_at(n, cfg, &mut rtl)?;
         }
         let (inp, mp, ended) = side.step(Some(&ro));
         let mo = side.outputs();
         ro = rtl.tick(&inp);
         let rp = rtl.probes();
         let ok = agree(cfg.compare, &mo, &mp, &ro, &rp);
-        if let Some(w) = writer.as_mut() {
+        if let Some(w) = window.as_mut() {
             let txt = ended.map(|c| c.short(chip));
-            w.tick(n, &inp, &mo, &mp, &ro, &rp, !ok, txt.as_deref()).map_err(|e| format!("writing VCD: {e}"))?;
-            if n + 1 >= t_to {
-                if let Some(w) = writer.take() {
-                    w.finish().map_err(|e| format!("writing VCD: {e}"))?;
-                }
-                rtl.trace_close();
-            }
+            w.record(n, (&inp, &mo, &mp, &ro, &rp), !ok, txt.as_deref(), &mut rtl)?;
         }
         out.cycles = n + 1;
         if !ok && out.mismatch.is_none() {
@@ -179,9 +173,8 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
             break;
         }
     }
-    if let Some(w) = writer.take() {
-        w.finish().map_err(|e| format!("writing VCD: {e}"))?;
-        rtl.trace_close();
+    if let Some(w) = window.as_mut() {
+        w.close(&mut rtl)?;
     }
     (out.frames, out.pin_changes) = (side.source().frames(), side.source().pin_changes());
     if out.mismatch.is_some() {
@@ -189,6 +182,54 @@ fn simulate(cfg: &Config, trace: Option<(&Path, u64, u64)>) -> Result<Outcome, S
     }
     out.coverage = side.into_coverage();
     Ok(out)
+}
+
+/// The VCD of the ticks `from..to` of a single-thread run, with Verilator's own trace beside it.
+struct TraceWindow<'a> {
+    path: &'a Path,
+    from: u64,
+    to: u64,
+    writer: Option<TraceWriter>,
+}
+
+impl TraceWindow<'_> {
+    /// Opens both traces before tick `n` when it is the first of the window.
+    fn open_at(&mut self, n: u64, cfg: &Config, rtl: &mut Rtl) -> Result<(), String> {
+        if n == self.from {
+            let title = format!("tmc429 cosim {} seed {}: model and RTL", cfg.variant, cfg.seed);
+            let path = self.path;
+            self.writer = Some(TraceWriter::create(path, cfg.fclk, &title).map_err(|e| format!("{}: {e}", path.display()))?);
+            rtl.trace_open(&rtl_trace_path(path), cfg.fclk)?;
+        }
+        Ok(())
+    }
+
+    /// Tick `n` with the pins and probes of both sides; closes the traces after the window's last.
+    fn record(
+        &mut self,
+        n: u64,
+        (inp, mo, mp, ro, rp): (&Inputs, &Outputs, &Probes, &Outputs, &Probes),
+        bad: bool,
+        txn: Option<&str>,
+        rtl: &mut Rtl,
+    ) -> Result<(), String> {
+        if let Some(w) = self.writer.as_mut() {
+            w.tick(n, inp, mo, mp, ro, rp, bad, txn).map_err(|e| format!("writing VCD: {e}"))?;
+            if n + 1 >= self.to {
+                self.close(rtl)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Finishes the VCD and closes Verilator's trace, if they are open.
+    fn close(&mut self, rtl: &mut Rtl) -> Result<(), String> {
+        if let Some(w) = self.writer.take() {
+            w.finish().map_err(|e| format!("writing VCD: {e}"))?;
+            rtl.trace_close();
+        }
+        Ok(())
+    }
 }
 
 /// Runs model and RTL in lock-step on two threads ([`crate::pair::run_pair`]): the model side
@@ -213,16 +254,8 @@ fn simulate_pair(cfg: &Config) -> Result<Outcome, String> {
     if first.is_some() {
         return simulate(cfg, None);
     }
-    Ok(Outcome {
-        variant: cfg.variant,
-        seed: cfg.seed,
-        cycles: cfg.cycles,
-        frames: side.source().frames(),
-        pin_changes: side.source().pin_changes(),
-        mismatch: None,
-        coverage: side.into_coverage(),
-        vcd_files: Vec::new(),
-    })
+    let (frames, pin_changes) = (side.source().frames(), side.source().pin_changes());
+    Ok(Outcome { cycles: cfg.cycles, frames, pin_changes, coverage: side.into_coverage(), ..Outcome::empty(cfg) })
 }
 
 /// The co-simulation on one thread, without VCD (`cfg.vcd` is ignored): the loop the mismatch
