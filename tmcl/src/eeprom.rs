@@ -82,6 +82,28 @@ pub fn crc32(data: &[u8]) -> u32 {
     !crc
 }
 
+/// The payload of an image file: after the signature and the length field, before the CRC-32,
+/// each checked.
+fn payload(b: &[u8]) -> Result<&[u8], EepromError> {
+    let bad = |s: &str| Err(EepromError::Corrupt(s.to_string()));
+    if b.len() < 16 {
+        return bad(&format!("file has {} bytes, at least 16 expected", b.len()));
+    }
+    if &b[..8] != MAGIC {
+        return bad("missing the \"TMCLEEP2\" signature at offset 0");
+    }
+    let n = u32::from_le_bytes([b[8], b[9], b[10], b[11]]) as usize;
+    if b.len() != 12 + n + 4 {
+        return bad(&format!("payload length field says {n} bytes, file size implies {}", b.len().saturating_sub(16)));
+    }
+    let stored = u32::from_le_bytes([b[12 + n], b[13 + n], b[14 + n], b[15 + n]]);
+    let computed = crc32(&b[..12 + n]);
+    if stored != computed {
+        return bad(&format!("CRC-32 mismatch: stored ${stored:08x}, computed ${computed:08x}"));
+    }
+    Ok(&b[12..12 + n])
+}
+
 impl Image {
     pub fn encode(&self) -> Vec<u8> {
         let mut p = vec![self.global.kind().code()];
@@ -116,22 +138,7 @@ impl Image {
 
     pub fn decode(b: &[u8]) -> Result<Image, EepromError> {
         let bad = |s: &str| Err(EepromError::Corrupt(s.to_string()));
-        if b.len() < 16 {
-            return bad(&format!("file has {} bytes, at least 16 expected", b.len()));
-        }
-        if &b[..8] != MAGIC {
-            return bad("missing the \"TMCLEEP2\" signature at offset 0");
-        }
-        let n = u32::from_le_bytes([b[8], b[9], b[10], b[11]]) as usize;
-        if b.len() != 12 + n + 4 {
-            return bad(&format!("payload length field says {n} bytes, file size implies {}", b.len().saturating_sub(16)));
-        }
-        let stored = u32::from_le_bytes([b[12 + n], b[13 + n], b[14 + n], b[15 + n]]);
-        let computed = crc32(&b[..12 + n]);
-        if stored != computed {
-            return bad(&format!("CRC-32 mismatch: stored ${stored:08x}, computed ${computed:08x}"));
-        }
-        let p = &b[12..12 + n];
+        let p = payload(b)?;
         let mut pos = 1usize;
         let code = p.first().copied().unwrap_or(0xff);
         let Some(kind) = ModuleType::from_code(code) else {
@@ -148,29 +155,8 @@ impl Image {
             *pos += 4;
             v
         };
-        for a in 0..AXES {
-            for q in img.axes[a].stored_params() {
-                let v = get(&mut pos);
-                img.axes[a].set_raw(q, v);
-            }
-            if let Err(e) = img.axes[a].validate() {
-                return bad(&format!("axis {a}: {e}"));
-            }
-        }
-        for q in img.global.stored_params() {
-            let v = get(&mut pos);
-            img.global.set_raw(q, v);
-        }
-        if let Err(e) = img.global.validate() {
+        if let Err(e) = img.read_stored(&mut || get(&mut pos)) {
             return bad(&e);
-        }
-        for i in 0..STORED_USER_VARS {
-            img.user_vars[i] = get(&mut pos);
-        }
-        for a in 0..AXES {
-            for c in 0..COORDS {
-                img.coords[a][c] = get(&mut pos);
-            }
         }
         let len = get(&mut pos) as u32 as usize;
         if len > PROGRAM_SIZE {
@@ -186,6 +172,36 @@ impl Image {
             img.program.push(Instruction::from_bytes7(&s));
         }
         Ok(img)
+    }
+
+    /// The stored parameters, user variables and coordinates in the image's order, each word
+    /// from `get`; an axis or the global parameters out of range is an error.
+    fn read_stored(&mut self, get: &mut dyn FnMut() -> i32) -> Result<(), String> {
+        for a in 0..AXES {
+            for q in self.axes[a].stored_params() {
+                let v = get();
+                self.axes[a].set_raw(q, v);
+            }
+            if let Err(e) = self.axes[a].validate() {
+                return Err(format!("axis {a}: {e}"));
+            }
+        }
+        for q in self.global.stored_params() {
+            let v = get();
+            self.global.set_raw(q, v);
+        }
+        if let Err(e) = self.global.validate() {
+            return Err(e);
+        }
+        for i in 0..STORED_USER_VARS {
+            self.user_vars[i] = get();
+        }
+        for a in 0..AXES {
+            for c in 0..COORDS {
+                self.coords[a][c] = get();
+            }
+        }
+        Ok(())
     }
 
     /// Loads a file: `Ok(None)` if it does not exist (factory defaults apply).

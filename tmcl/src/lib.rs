@@ -3,6 +3,7 @@
 //! manual ([TMCL]), an assembler, and a server.
 
 pub mod asm;
+mod asm_expr;
 mod asm_symbols;
 pub mod calc;
 pub mod chip;

@@ -63,6 +63,19 @@ impl<C: Spi429> Module<C> {
             op::GIO => self.gio(t, mo),
             op::SCO => self.sco(t, mo, v),
             op::GCO => self.gco(t, mo),
+            _ => self.program_op(o, t, m, v),
+        };
+        let reads = matches!(o, op::GAP | op::GGP | op::GIO | op::GCO) || (o == op::RFS && t == 2);
+        if origin == Origin::Program && reads && r.0 == Status::Ok.code() {
+            self.set_accu(r.1);
+        }
+        r
+    }
+
+    /// The commands on the program's state: coordinates, the accumulator, the comparison,
+    /// the error flags, the interrupt vectors ([TMCL] §5); any other is not a command.
+    fn program_op(&mut self, o: u8, t: u8, m: usize, v: i32) -> (u8, i32) {
+        match o {
             op::CCO => {
                 let x = self.actual_position(m);
                 self.set_coord(m, t as usize, x);
@@ -103,12 +116,7 @@ impl<C: Spi429> Module<C> {
                 ok(v)
             }
             _ => err(Status::InvalidCommand, v),
-        };
-        let reads = matches!(o, op::GAP | op::GGP | op::GIO | op::GCO) || (o == op::RFS && t == 2);
-        if origin == Origin::Program && reads && r.0 == Status::Ok.code() {
-            self.set_accu(r.1);
         }
-        r
     }
 
     fn calcx(&mut self, t: u8, v: i32) -> (u8, i32) {
