@@ -81,6 +81,38 @@ impl Outcome {
 
 /// Builds the report of an aligned replay.
 pub fn build(s: &Setup, fr: &Frames, al: &Aligned, tol: u64, opt: &Options, file: &str) -> Outcome {
+    let tb = al.tb;
+    let header = header(s, al, tol, opt, file);
+    let mut diffs = Vec::new();
+    let mut tallies = frame_tallies(s, fr, &al.run.frames, &mut diffs);
+    let win = (al.run.first, al.run.last);
+    let has = |p: Pin| s.map.get(p).is_some();
+    let stepdir = al.run.model.iter().chain(&al.run.chip).any(|e| matches!(e, Event::Step { .. }));
+    let ints = |v: &[Event]| v.iter().filter(|e| matches!(e, Event::Int { .. })).copied().collect::<Vec<_>>();
+    let mut t = Tally { name: "nINT edges", absent: "not captured (nINT_SDO_C)", ..Default::default() };
+    if has(Pin::NintSdoC) {
+        t.compared = Some(match_events(&ints(&al.run.model), &ints(&al.run.chip), tol, win, &tb, "nINT", &mut t, &mut diffs));
+    }
+    tallies.push(t);
+    let chains = |v: &[Event]| v.iter().filter(|e| matches!(e, Event::Chain { .. })).copied().collect::<Vec<_>>();
+    let mut t = Tally { name: "chain datagrams", absent: "not captured (nSCS_S, SCK_S, SDO_S)", ..Default::default() };
+    if stepdir && chains(&al.run.model).is_empty() {
+        t.absent = "none (Step/Dir mode)";
+    } else if has(Pin::NscsS) && has(Pin::SckS) && has(Pin::SdoS) {
+        t.compared = Some(match_events(&chains(&al.run.model), &chains(&al.run.chip), tol, win, &tb, "chain datagram", &mut t, &mut diffs));
+    }
+    tallies.push(t);
+    tallies.extend(step_tallies(s, al, tol, opt, stepdir, &mut diffs));
+    diffs.sort_by(|a, b| a.time.total_cmp(&b.time));
+    let mut notes = Vec::new();
+    if !stepdir && al.run.model.iter().chain(&al.run.chip).all(|e| matches!(e, Event::Int { .. })) {
+        notes.push("no driver-chain datagram or step in the capture: the chip's CLK phase is unknown, so replies that depend on motion may differ by its timing".into());
+    }
+    Outcome { header, tallies, differences: diffs, notes }
+}
+
+/// The report's header: the capture, the pins it has, the chip's CLK as fitted, the tolerance.
+fn header(s: &Setup, al: &Aligned, tol: u64, opt: &Options, file: &str) -> Vec<String> {
     let cap = s.cap;
     let tb = al.tb;
     let ppm = (tb.fclk / opt.fclk as f64 - 1.0) * 1e6;
@@ -114,25 +146,15 @@ pub fn build(s: &Setup, fr: &Frames, al: &Aligned, tol: u64, opt: &Options, file
         ),
     ];
     header.push(format!("timing tolerance: ±{tol} CLK ({:.0} ns)", tol as f64 / tb.fclk * 1e9));
-    let mut diffs = Vec::new();
-    let mut tallies = frame_tallies(s, fr, &al.run.frames, &mut diffs);
-    let win = (al.run.first, al.run.last);
+    header
+}
+
+/// The Step/Dir pulses of each motor, model against chip, where the capture has its STEP and
+/// DIR pins.
+fn step_tallies(s: &Setup, al: &Aligned, tol: u64, opt: &Options, stepdir: bool, diffs: &mut Vec<Difference>) -> Vec<Tally> {
+    let (tb, win) = (al.tb, (al.run.first, al.run.last));
     let has = |p: Pin| s.map.get(p).is_some();
-    let stepdir = al.run.model.iter().chain(&al.run.chip).any(|e| matches!(e, Event::Step { .. }));
-    let ints = |v: &[Event]| v.iter().filter(|e| matches!(e, Event::Int { .. })).copied().collect::<Vec<_>>();
-    let mut t = Tally { name: "nINT edges", absent: "not captured (nINT_SDO_C)", ..Default::default() };
-    if has(Pin::NintSdoC) {
-        t.compared = Some(match_events(&ints(&al.run.model), &ints(&al.run.chip), tol, win, &tb, "nINT", &mut t, &mut diffs));
-    }
-    tallies.push(t);
-    let chains = |v: &[Event]| v.iter().filter(|e| matches!(e, Event::Chain { .. })).copied().collect::<Vec<_>>();
-    let mut t = Tally { name: "chain datagrams", absent: "not captured (nSCS_S, SCK_S, SDO_S)", ..Default::default() };
-    if stepdir && chains(&al.run.model).is_empty() {
-        t.absent = "none (Step/Dir mode)";
-    } else if has(Pin::NscsS) && has(Pin::SckS) && has(Pin::SdoS) {
-        t.compared = Some(match_events(&chains(&al.run.model), &chains(&al.run.chip), tol, win, &tb, "chain datagram", &mut t, &mut diffs));
-    }
-    tallies.push(t);
+    let mut tallies = Vec::new();
     let step_pins = [(Pin::SdoS, Pin::SckS), (Pin::NscsS, Pin::SdiS), (Pin::Nscs2, Pin::Nscs3)];
     for (m, (sp, dp)) in step_pins.iter().enumerate().take(if opt.chip == tmc429_model::Chip::Tmc4210 { 1 } else { 3 }) {
         let steps =
@@ -142,25 +164,12 @@ pub fn build(s: &Setup, fr: &Frames, al: &Aligned, tol: u64, opt: &Options, file
         if !stepdir {
             t.absent = "none (no Step/Dir pulses)";
         } else if has(*sp) && has(*dp) {
-            t.compared = Some(match_events(
-                &steps(&al.run.model),
-                &steps(&al.run.chip),
-                tol,
-                win,
-                &tb,
-                &format!("motor {m} step"),
-                &mut t,
-                &mut diffs,
-            ));
+            t.compared =
+                Some(match_events(&steps(&al.run.model), &steps(&al.run.chip), tol, win, &tb, &format!("motor {m} step"), &mut t, diffs));
         }
         tallies.push(t);
     }
-    diffs.sort_by(|a, b| a.time.total_cmp(&b.time));
-    let mut notes = Vec::new();
-    if !stepdir && al.run.model.iter().chain(&al.run.chip).all(|e| matches!(e, Event::Int { .. })) {
-        notes.push("no driver-chain datagram or step in the capture: the chip's CLK phase is unknown, so replies that depend on motion may differ by its timing".into());
-    }
-    Outcome { header, tallies, differences: diffs, notes }
+    tallies
 }
 
 /// The decoded transaction of a frame, with the given reply.

@@ -30,18 +30,7 @@ pub fn exact_timescale(hz: u64) -> Option<(u32, &'static str)> {
 /// qualified with the scope path (`motor0.step`).
 pub fn read(path: &Path) -> Result<Capture, CaptureError> {
     let file = path.display().to_string();
-    let mut f = File::open(path).map_err(|e| CaptureError(format!("{file}: cannot read: {e}")))?;
-    // a VCD ends with a complete line: a file cut short mid-line is truncated
-    let len = f.metadata().map(|m| m.len()).unwrap_or(0);
-    if len == 0 {
-        return Err(CaptureError(format!("{file}: empty file")));
-    }
-    let mut last = [0u8; 1];
-    f.seek(SeekFrom::End(-1)).and_then(|_| f.read_exact(&mut last)).map_err(|e| CaptureError(format!("{file}: cannot read: {e}")))?;
-    f.seek(SeekFrom::Start(0)).map_err(|e| CaptureError(format!("{file}: cannot read: {e}")))?;
-    if last[0] != b'\n' {
-        return Err(CaptureError(format!("{file}: the last line is incomplete: the VCD is truncated")));
-    }
+    let f = open_complete(path, &file)?;
     let mut p = vcd::Parser::new(BufReader::with_capacity(1 << 20, f));
     let mut scope: Vec<String> = Vec::new();
     // (scope path, reference, id) of every one-bit variable
@@ -99,6 +88,23 @@ pub fn read(path: &Path) -> Result<Capture, CaptureError> {
     }
     let names = channel_names(&vars);
     Ok(Capture::from_changes(per_s / k as u64, time + 1, names, changes))
+}
+
+/// Opens a VCD file that is not empty and ends with a complete line (a file cut short
+/// mid-line is truncated).
+fn open_complete(path: &Path, file: &str) -> Result<File, CaptureError> {
+    let mut f = File::open(path).map_err(|e| CaptureError(format!("{file}: cannot read: {e}")))?;
+    let len = f.metadata().map(|m| m.len()).unwrap_or(0);
+    if len == 0 {
+        return Err(CaptureError(format!("{file}: empty file")));
+    }
+    let mut last = [0u8; 1];
+    f.seek(SeekFrom::End(-1)).and_then(|_| f.read_exact(&mut last)).map_err(|e| CaptureError(format!("{file}: cannot read: {e}")))?;
+    f.seek(SeekFrom::Start(0)).map_err(|e| CaptureError(format!("{file}: cannot read: {e}")))?;
+    if last[0] != b'\n' {
+        return Err(CaptureError(format!("{file}: the last line is incomplete: the VCD is truncated")));
+    }
+    Ok(f)
 }
 
 fn channel_names(vars: &[(String, String, vcd::IdCode)]) -> Vec<String> {
