@@ -1,0 +1,307 @@
+//! `tmc429 vectors` replayed on the RTL under Icarus Verilog: clean, with a planted bug (the
+//! first mismatch at the right cycle and column), and corrupt vector files.
+
+use std::process::Command;
+
+mod vectors_common;
+use vectors_common::*;
+
+/// The chip-hold vectors replay clean; with PLANT_BUG_STATUS (CDGW ignores the datagram-word
+/// flag) the first mismatch is the status byte's bit 30 on the data pins, in the 8-bit status
+/// frame after the datagram_low_word write: frame start + setup (3) + bit 0 (2·3) = SCK_C falls
+/// for bit 1, acted on 2 edges later (C4, C11).
+#[test]
+fn planted_bug_fails_at_the_right_cycle_and_column() {
+    let dir = tmpdir("bug");
+    export(&dir, &["--unit", "chip", "--scenario", "chip-hold"]);
+    export(&dir, &["--unit", "spi", "--scenario", "chip-hold", "--format", "csv"]);
+    let stem = dir.join("chip-chip-hold-tmc429");
+    let cycles: u64 = meta(&stem, "cycles").parse().unwrap();
+
+    let clean = build_chip_tb(&dir, None);
+    let out = replay(&clean, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
+
+    // the status frame after the datagram_low_word write
+    let rows = csv(&dir.join("spi-chip-hold-tmc429.csv"));
+    let w = rows.iter().position(|r| r[6] == "datagram_low_word" && r[5] == "write").unwrap();
+    let st = &rows[w + 1];
+    assert_eq!((st[5].as_str(), st[4].as_str()), ("short", "55"), "CDGW set in the model: {st:?}");
+    let start: u64 = st[0].parse().unwrap();
+    let expected = start + 3 + 2 * 3 + 2;
+
+    let bug = build_chip_tb(&dir, Some("PLANT_BUG_STATUS"));
+    let out = replay(&bug, &stem, None);
+    let first: Vec<&String> = out.iter().filter(|l| l.starts_with("MISMATCH")).take(2).collect();
+    assert_eq!(
+        first,
+        [
+            &format!("MISMATCH cycle {expected} column nint_sdo_c: expected 1 got 0"),
+            &format!("MISMATCH cycle {expected} column sdoz_c: expected 1 got 0"),
+        ]
+    );
+    let last = out.last().unwrap();
+    assert!(last.ends_with(" failed") && !last.ends_with(" 0 failed"), "{last}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A truncated line, a line of the wrong width, a changed digit and a missing line are reported
+/// as corrupt, never replayed as a pass.
+#[test]
+fn corrupt_vector_files_are_reported() {
+    let dir = tmpdir("corrupt");
+    export(&dir, &["--unit", "chip", "--scenario", "datasheet"]);
+    let stem = dir.join("chip-datasheet-tmc429");
+    let cycles: u64 = meta(&stem, "cycles").parse().unwrap();
+    let good = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = good.lines().collect();
+    assert_eq!(lines.len() as u64, cycles);
+    assert!(lines.iter().all(|l| l.len() == 8 && l.starts_with('A')));
+    let vvp = build_chip_tb(&dir, None);
+    let write = |name: &str, f: &dyn Fn(&mut Vec<String>)| {
+        let mut v: Vec<String> = lines.iter().map(|s| s.to_string()).collect();
+        f(&mut v);
+        let p = dir.join(name);
+        std::fs::write(&p, v.join("\n") + "\n").unwrap();
+        p
+    };
+    let cases: [(&str, &dyn Fn(&mut Vec<String>), String); 4] = [
+        (
+            "trunc.hex",
+            &|v| {
+                v[99].pop();
+            },
+            "line 100: 7 characters, expected 8 hex digits".into(),
+        ),
+        ("wide.hex", &|v| v[9].push('0'), "line 10: 9 characters, expected 8 hex digits".into()),
+        (
+            "digit.hex",
+            &|v| {
+                let d = if &v[499][3..4] == "0" { "1" } else { "0" };
+                v[499].replace_range(3..4, d)
+            },
+            "line 500: check digit wrong".into(),
+        ),
+        (
+            "short.hex",
+            &|v| {
+                v.pop();
+            },
+            format!("has {} lines", cycles - 1),
+        ),
+    ];
+    for (name, f, msg) in cases {
+        let p = write(name, f);
+        let out = replay(&vvp, &stem, Some(&p));
+        assert!(out.iter().any(|l| l.starts_with("CORRUPT") && l.contains(&msg)), "{name}: {out:?}");
+        assert_eq!(out.last().unwrap(), &format!("0 passed, {cycles} failed"), "{name}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Pin-level lut vectors (tmc429_microstep): Table 12-4 / 12-2 / 8-1 values at the unit's ports,
+/// a clean replay, and a flipped expected bit in a copy that the replay reports at its line and
+/// column (not as a corrupt file: the check digit is flipped with it).
+#[test]
+fn lut_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("lutpins");
+    export(&dir, &["--unit", "lut", "--scenario", "tables", "--format", "pins"]);
+    let stem = dir.join("lut-tables-tmc429");
+    assert_eq!(meta(&stem, "cycles"), (2 * 2 * 2 * 8 * (4 + 8 + 16 + 32 + 64 + 128 + 256 + 256)).to_string());
+    assert_eq!(meta(&stem, "width"), "56");
+    let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = hex.lines().collect();
+    // word: A | w 8 | coil_b 1 | lut 6 | i_scale 3 | code 5 | dac_q 6 | neg, step, pol 5 | lut_idx 6 | dac 6 | bit_out 1 | _check 5
+    let field = |l: &str, lo: u32, w: u32| (u64::from_str_radix(l, 16).unwrap() >> lo) & ((1 << w) - 1);
+    let ports = |l: &str| (field(l, 44, 8), field(l, 43, 1), field(l, 37, 6), field(l, 12, 6), field(l, 6, 6));
+    // sine, usrs 0, +, i_scale 0, row 1 (w = 64, Table 12-4): coil A reads sin index 63 = 63, coil B cos index 0 = 0
+    assert_eq!(ports(lines[2]), (64, 0, 63, 63, 63));
+    assert_eq!(ports(lines[3]), (64, 1, 0, 0, 0));
+    // i_scale %100 (Table 8-1): rows 4·4 + 1 → (63 · 4) >> 3 = 31
+    assert_eq!(ports(lines[2 * (4 * 4 + 1)]), (64, 0, 63, 63, 31));
+
+    let vvp = dir.join("tb_lut.vvp");
+    let o = Command::new("iverilog")
+        .args(["-g2005", "-P", "tb_lut.CHIP=1", "-I"])
+        .arg(root().join("vectors/tb"))
+        .arg("-o")
+        .arg(&vvp)
+        .arg(root().join("vectors/tb/tb_lut.v"))
+        .arg(root().join("rtl/tmc429_microstep.v"))
+        .output()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = replay(&vvp, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{} passed, 0 failed", lines.len()), "{out:?}");
+
+    // flip bit_out (bit 1 of digit 12) of line 1000 and the same bit of the check digit
+    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let b = bad[1000].as_bytes().to_vec();
+    let expected = (field(lines[1000], 5, 1), field(lines[1000], 5, 1) ^ 1);
+    let mut s: String = b[..12].iter().map(|c| *c as char).collect();
+    s.push(flip(b[12], 2));
+    s.push(flip(b[13], 2));
+    bad[1000] = s;
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let out = replay(&vvp, &stem, Some(&planted));
+    assert_eq!(
+        out[..2],
+        [
+            format!("MISMATCH cycle 1000 column bit_out: expected {} got {}", expected.1, expected.0),
+            format!("{} passed, 1 failed", lines.len() - 1)
+        ],
+        "{out:?}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Pin-level ramp vectors (tmc429_ramp) of the reference search: the motors one after the
+/// other, each from its reset line; motor 0's switch stop (C61), its zeroing by a µC write
+/// (C3) and its RAMP_MODE move ending on x_target = 40 with V = 0 (C52); a clean replay, and a
+/// flipped expected `stop` bit in a copy that the replay reports at its line and column.
+#[test]
+fn ramp_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("ramppins");
+    export(&dir, &["--unit", "ramp", "--scenario", "reference-search", "--format", "pins"]);
+    let stem = dir.join("ramp-reference-search-tmc429");
+    assert_eq!(meta(&stem, "width"), "252");
+    let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = hex.lines().collect();
+    let cycles: usize = meta(&stem, "cycles").parse().unwrap();
+    assert_eq!((lines.len(), cycles % 3), (cycles, 0));
+    let per = cycles / 3;
+    // word bits: _sentinel 251..248 | inputs 247..133 (rst 247, cond_tick 245, we 161,
+    // widx 160..157, wdata 156..133) | outputs 132..4 (x_actual 132..109, v 108..89, xeqt 18,
+    // stop 17) | _check 3..0
+    let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
+    let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
+    for m in 0..3 {
+        assert_eq!(field(lines[m * per], 247, 1), 1, "motor {m} begins with its reset line");
+        assert_eq!(field(lines[m * per + 1], 247, 1), 0);
+    }
+    let m0 = &lines[..per];
+    // the switch stop holds while REF1 is high and motor 0 moves left; the motor's condition
+    // slot takes the condition of the edge before it (C52, C61), V is 0 after it
+    let s = 1 + m0
+        .windows(2)
+        .position(|w| field(w[0], 17, 1) == 1 && field(w[1], 17, 1) == 1 && field(w[1], 245, 1) == 1)
+        .expect("a switch stop");
+    assert_eq!(field(m0[s + 1], 89, 20), 0);
+    // the µC write x_actual := 0 (IDX 1) is executed in its edge
+    let z = m0.iter().position(|l| field(l, 161, 1) == 1 && field(l, 157, 4) == 1).expect("x_actual write");
+    assert!(z > s);
+    assert_eq!((field(m0[z], 133, 24), field(m0[z], 109, 24)), (0, 0));
+    // the move ends on x_target = 40 with V = 0
+    let last = m0[per - 1];
+    assert_eq!((field(last, 109, 24), field(last, 89, 20), field(last, 18, 1)), (40, 0, 1));
+    // motor 1 holds at 0 all along
+    assert!(lines[per..2 * per].iter().all(|l| field(l, 109, 24) == 0 && field(l, 89, 20) == 0));
+
+    let vvp = dir.join("tb_ramp.vvp");
+    let o = Command::new("iverilog")
+        .args(["-g2005", "-P", "tb_ramp.CHIP=1", "-I"])
+        .arg(root().join("vectors/tb"))
+        .arg("-I")
+        .arg(root().join("rtl"))
+        .arg("-o")
+        .arg(&vvp)
+        .arg(root().join("vectors/tb/tb_ramp.v"))
+        .arg(root().join("rtl/tmc429_ramp.v"))
+        .arg(root().join("rtl/tmc429_accel.v"))
+        .arg(root().join("rtl/tmc429_pram.v"))
+        .arg(root().join("rtl/tmc429_wram.v"))
+        .output()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = replay(&vvp, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
+
+    // flip `stop` (word bit 17: bit 1 of digit 58) of the line s + 1 of motor 1's lines, and the
+    // same bit of the check digit (62)
+    let k = per + s + 1;
+    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let b: Vec<char> = bad[k].chars().collect();
+    let mut c = b.clone();
+    c[58] = flip(b[58] as u8, 2);
+    c[62] = flip(b[62] as u8, 2);
+    bad[k] = c.into_iter().collect();
+    let was = field(lines[k], 17, 1);
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let out = replay(&vvp, &stem, Some(&planted));
+    assert_eq!(
+        out[..2],
+        [format!("MISMATCH cycle {k} column stop: expected {} got {was}", was ^ 1), format!("{} passed, 1 failed", cycles - 1)],
+        "{out:?}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Pin-level vectors of the driver-chain master (tmc429_chain) of the chain-unit set replay
+/// clean on the RTL; the en_sd abort (C89) gives the taken cover and datagram-word flags back;
+/// a flipped expected SDO_S bit in a copy of the file is reported at its line and column.
+#[test]
+fn chain_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("chainpins");
+    export(&dir, &["--unit", "chain", "--scenario", "chain-unit", "--format", "pins"]);
+    let stem = dir.join("chain-chain-unit-tmc429");
+    assert_eq!((meta(&stem, "width").as_str(), meta(&stem, "in_width").as_str(), meta(&stem, "out_width").as_str()), ("204", "105", "88"));
+    let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
+    let lines: Vec<&str> = hex.lines().collect();
+    let cycles: usize = meta(&stem, "cycles").parse().unwrap();
+    assert_eq!(lines.len(), cycles);
+    // word bits: A 203..200 | inputs 199..95 (rst 199, spi_mode 197, cw 139, dgw 138)
+    // | outputs 94..7 (cover_busy 83, dgw_busy 82, cs 33, sdo 31, state 23..21) | _check 6..0
+    // (3 zero pad bits and the check digit)
+    let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
+    let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
+    assert_eq!((field(lines[0], 199, 1), field(lines[1], 199, 1)), (1, 0));
+    // the abort: a busy chain sees spi_mode 0, goes to IDLE with CS inactive; the next line
+    // presents cw and dgw waiting again (the register file took them back, C89)
+    let a = (1..cycles).find(|&k| field(lines[k], 197, 1) == 0).expect("an en_sd abort");
+    assert_ne!(field(lines[a - 1], 21, 3), 0, "busy before the abort");
+    assert_eq!((field(lines[a - 1], 83, 1), field(lines[a - 1], 82, 1)), (1, 1));
+    assert_eq!((field(lines[a], 21, 3), field(lines[a], 33, 1), field(lines[a], 83, 1), field(lines[a], 82, 1)), (0, 0, 0, 0));
+    assert_eq!((field(lines[a + 1], 139, 1), field(lines[a + 1], 138, 1)), (1, 1));
+
+    let vvp = dir.join("tb_chain.vvp");
+    let o = Command::new("iverilog")
+        .args(["-g2005", "-P", "tb_chain.CHIP=1", "-I"])
+        .arg(root().join("vectors/tb"))
+        .arg("-I")
+        .arg(root().join("rtl"))
+        .arg("-o")
+        .arg(&vvp)
+        .arg(root().join("vectors/tb/tb_chain.v"))
+        .arg(root().join("rtl/tmc429_chain.v"))
+        .arg(root().join("rtl/tmc429_microstep.v"))
+        .output()
+        .expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = replay(&vvp, &stem, None);
+    assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
+
+    // flip `sdo` (word bit 31: bit 3 of the 8th digit from the right) of the first line with
+    // SDO_S high while the chip select is active (a datagram bit; SDO_S idles high, C81), and
+    // the same bit of the check digit (the last)
+    let k = lines.iter().position(|l| field(l, 31, 1) == 1 && field(l, 33, 1) == 1).expect("an SDO_S high bit");
+    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let mut c: Vec<char> = bad[k].chars().collect();
+    let n = c.len();
+    c[n - 1 - 7] = flip(c[n - 1 - 7] as u8, 8);
+    c[n - 1] = flip(c[n - 1] as u8, 8);
+    bad[k] = c.into_iter().collect();
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let out = replay(&vvp, &stem, Some(&planted));
+    assert_eq!(
+        out[..2],
+        [format!("MISMATCH cycle {k} column sdo: expected 0 got 1"), format!("{} passed, 1 failed", cycles - 1)],
+        "{out:?}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
