@@ -9,6 +9,7 @@
 //! - [`scenario`]: built-in scenarios and scenario files;
 //! - [`export`]: runs a scenario on the model and writes the files of one unit.
 
+mod builtin;
 pub mod evcd;
 pub mod files;
 pub mod lut;
