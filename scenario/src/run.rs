@@ -178,8 +178,11 @@ struct Idle {
 
 impl Idle {
     /// Runs the edges after `cycles` up to, not including, edge `limit` (which the caller's
-    /// full edge handles); the outputs of the last edge run, if any.
+    /// full edge handles); the outputs of the last edge run, if any. The model's hot loop: kept
+    /// a function of its own, so that the compiler's inlining inside it does not depend on
+    /// the size of the run loop around it.
     #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
     fn edges(
         &self,
         m: &mut Tmc429,
