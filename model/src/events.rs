@@ -85,7 +85,9 @@ impl EventDecoder {
         self.pins_changed(chip, out, cycle, step_dir, mode_changed, sink);
     }
 
-    /// The part of [`EventDecoder::observe`] for an edge that changed a pin or the mode.
+    /// The part of [`EventDecoder::observe`] for an edge that changed a pin or the mode: out of
+    /// line, so that the per-edge check in `observe` stays small where it is inlined.
+    #[inline(never)]
     fn pins_changed(&mut self, chip: &Tmc429, out: &Outputs, cycle: u64, step_dir: bool, mode_changed: bool, sink: &mut impl FnMut(Event)) {
         let g = chip.global();
         self.step_dir_prev = step_dir;
