@@ -102,7 +102,7 @@ pub struct EventSpec {
 /// What an expectation checks.
 #[derive(Clone, Debug)]
 pub enum Check {
-    /// Probe or pin values (index into [`SIGNALS`], expected value) after edge `at`.
+    /// Probe or pin values (index into [`tmc429_testbench::signals::SIGNALS`], expected value) after edge `at`.
     Probes { at: u64, values: Vec<(usize, i64)> },
     /// A register (or one field of it) read over SPI, the read frame starting after edge `at`.
     Register { at: u64, a7: u8, reg: &'static Register, field: Option<Field>, expected: i64 },
@@ -250,7 +250,6 @@ fn registers_of(chip: Chip, space: Space) -> impl Iterator<Item = &'static Regis
     regmap::REGISTERS.iter().filter(move |r| r.space == space && r.chips.contains(chip))
 }
 
-/// Parses a scenario. `file` names it in messages.
 /// Parses a scenario file's text; every error with its line (`file` names it in the errors).
 pub fn parse(text: &str, file: &str) -> Result<Scenario, Vec<ParseError>> {
     let doc = match DeTable::parse(text) {

@@ -155,9 +155,7 @@ impl Image {
             *pos += 4;
             v
         };
-        if let Err(e) = img.read_stored(&mut || get(&mut pos)) {
-            return bad(&e);
-        }
+        img.read_stored(&mut || get(&mut pos)).map_err(EepromError::Corrupt)?;
         let len = get(&mut pos) as u32 as usize;
         if len > PROGRAM_SIZE {
             return bad(&format!("program length {len} exceeds the {PROGRAM_SIZE} instructions of program memory"));

@@ -58,7 +58,7 @@ impl Stimulus {
     /// The next transaction of the motion profile (pending sequences first, by the caller).
     pub(crate) fn motion_txn(&mut self) -> Txn {
         debug_assert!(matches!(self.profile, Profile::Motion | Profile::MotionCore));
-        let kind = self.kind();
+        let kind = self.draw_kind();
         let seq = match kind {
             Kind::Random => {
                 let f = self.draw(crate::stimulus::frame_strategy(self.chip));
@@ -82,7 +82,7 @@ impl Stimulus {
 
     /// The kind of the next sequence, drawn by weight (the driver chain's and Step/Dir's only
     /// where the chip has them).
-    fn kind(&mut self) -> Kind {
+    fn draw_kind(&mut self) -> Kind {
         let chain = self.chip != Chip::Tmc4210;
         let step_dir = self.chip != Chip::Tmc428;
         let weights = [

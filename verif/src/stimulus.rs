@@ -9,10 +9,10 @@ use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use tmc429_model::Chip;
 
 mod driver;
-mod drivers;
+mod driver_side;
 
 pub use driver::{Driver, Event, Phase};
-pub use drivers::driver_sequence;
+pub use driver_side::driver_sequence;
 
 /// Minimum SCK_C half period, nSCS_C setup and hold, in CLK cycles ([428] Table 6-1).
 pub const MIN_HALF: u32 = 3;

@@ -73,7 +73,7 @@ pub struct Report {
     pub mismatch: Option<String>,
     pub samples: Vec<Sample>,
     pub vcd: Option<PathBuf>,
-    /// The input pins of every cycle run ([`Options::record_pins`]).
+    /// The input pins of every cycle run ([`super::Options::record_pins`]).
     pub pins: Option<PinRuns>,
 }
 

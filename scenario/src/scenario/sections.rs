@@ -135,7 +135,11 @@ impl Ctx<'_> {
         }
         if let (Some(Trigger::Cycle(x)), true) = (&trigger, duration > 0) {
             if *x >= duration {
-                let msg = format!("event at {} is not before the end of the scenario (duration {})", self.t(*x), self.t(duration));
+                let msg = format!(
+                    "event at {} is not before the end of the scenario (duration {})",
+                    self.time_text(*x),
+                    self.time_text(duration)
+                );
                 self.err(at, msg);
             }
         }
@@ -167,7 +171,7 @@ impl Ctx<'_> {
     }
 
     /// A time in CLK cycles as the messages show it.
-    fn t(&self, x: u64) -> String {
+    fn time_text(&self, x: u64) -> String {
         fmt_time(x as f64 / self.fclk as f64)
     }
 
@@ -189,7 +193,7 @@ impl Ctx<'_> {
             None => Some(0),
         };
         let (cond, within, after) = (cond?, within?, after?);
-        let n = format!("{} within {} after {}", describe(&cond), self.t(within), self.t(after));
+        let n = format!("{} within {} after {}", describe(&cond), self.time_text(within), self.time_text(after));
         Some((Check::Reached { cond, after, within }, n))
     }
 
@@ -201,7 +205,7 @@ impl Ctx<'_> {
         };
         let Some(when) = self.time(atv, "at") else { return Vec::new() };
         if duration > 0 && when > duration {
-            let msg = format!("at {} is after the end of the scenario (duration {})", self.t(when), self.t(duration));
+            let msg = format!("at {} is after the end of the scenario (duration {})", self.time_text(when), self.time_text(duration));
             self.err(atv.span().start, msg);
         }
         let mut checks = Vec::new();
@@ -209,7 +213,7 @@ impl Ctx<'_> {
             let values = self.probe_values(p);
             let n = values.iter().map(|(i, x)| format!("{}.{} = {x}", SIGNALS[*i].scope, SIGNALS[*i].name)).collect::<Vec<_>>().join(", ");
             if !values.is_empty() {
-                checks.push((Check::Probes { at: when, values }, format!("{n} at {}", self.t(when))));
+                checks.push((Check::Probes { at: when, values }, format!("{n} at {}", self.time_text(when))));
             }
         }
         if let Some(rt) = t.get("register").and_then(|r| self.table(r, "register")) {
@@ -218,8 +222,8 @@ impl Ctx<'_> {
             let late = (duration > 0 && when + frame > duration).then(|| {
                 let msg = format!(
                     "register read at {} ends after the scenario (duration {}): a read takes {frame} CLK",
-                    self.t(when),
-                    self.t(duration)
+                    self.time_text(when),
+                    self.time_text(duration)
                 );
                 (atv.span().start, msg)
             });
@@ -264,7 +268,7 @@ impl Ctx<'_> {
                 None => format!("{name} = {x}"),
             };
             let a7 = reg.a7(motor.unwrap_or(0));
-            checks.push((Check::Register { at: when, a7, reg, field, expected: x }, format!("{who} (read) at {}", self.t(when))));
+            checks.push((Check::Register { at: when, a7, reg, field, expected: x }, format!("{who} (read) at {}", self.time_text(when))));
         }
         checks
     }
