@@ -75,16 +75,7 @@ where
             1 => p.v_hz[m],
             _ => p.a_hz_per_s[m],
         };
-        let (mut lo, mut hi) = (0f64, 0f64);
-        for p in s {
-            for m in 0..n {
-                lo = lo.min(value(p, m));
-                hi = hi.max(value(p, m));
-            }
-        }
-        if hi - lo < 1e-9 {
-            hi = lo + 1.0;
-        }
+        let (lo, hi) = y_range(s, n, value);
         let pad = (hi - lo) * 0.05;
         let mut chart = ChartBuilder::on(area)
             .margin(12)
@@ -119,6 +110,21 @@ where
             .map_err(e)?;
     }
     Ok(())
+}
+
+/// The range of a panel's values over the samples of `n` motors, 0 included (at least 1 wide).
+fn y_range(s: &[crate::run::Sample], n: usize, value: impl Fn(&crate::run::Sample, usize) -> f64) -> (f64, f64) {
+    let (mut lo, mut hi) = (0f64, 0f64);
+    for p in s {
+        for m in 0..n {
+            lo = lo.min(value(p, m));
+            hi = hi.max(value(p, m));
+        }
+    }
+    if hi - lo < 1e-9 {
+        hi = lo + 1.0;
+    }
+    (lo, hi)
 }
 
 /// Axis numbers: 1500, 12.5k, 3.2M.

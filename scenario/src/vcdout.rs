@@ -115,16 +115,7 @@ impl VcdWriter {
         mismatch: bool,
         txn: Option<&str>,
     ) -> io::Result<()> {
-        let bits = input_bits(inp);
-        if self.last_in != Some(bits) {
-            self.w.timestamp(n * self.period + self.period / 2)?;
-            for k in 0..10 {
-                if self.last_in.is_none_or(|l| l[k] != bits[k]) {
-                    put(&mut self.w, self.inputs[k], 1, bits[k] as u64)?;
-                }
-            }
-            self.last_in = Some(bits);
-        }
+        self.inputs_at(n, inp)?;
         let mut fa = flatten(mo, mp);
         let mut fb = b.map(|(o, p)| flatten(o, p));
         // left-out signals must not count as changes
@@ -166,6 +157,21 @@ impl VcdWriter {
         }
         if let Some(t) = txn {
             put_text(&mut self.w, self.txn, t)?;
+        }
+        Ok(())
+    }
+
+    /// The input pins of edge `n` that changed, half a period before the edge.
+    fn inputs_at(&mut self, n: u64, inp: &Inputs) -> io::Result<()> {
+        let bits = input_bits(inp);
+        if self.last_in != Some(bits) {
+            self.w.timestamp(n * self.period + self.period / 2)?;
+            for k in 0..10 {
+                if self.last_in.is_none_or(|l| l[k] != bits[k]) {
+                    put(&mut self.w, self.inputs[k], 1, bits[k] as u64)?;
+                }
+            }
+            self.last_in = Some(bits);
         }
         Ok(())
     }

@@ -118,10 +118,7 @@ pub fn read(path: &Path) -> Result<Capture, CaptureError> {
     if chunks.is_empty() {
         return Err(CaptureError(format!("{file}: no logic data ({prefix}N) in the archive")));
     }
-    let n = meta.names.len();
-    let mut changes: Vec<Vec<(u64, bool)>> = vec![Vec::new(); n];
-    let mut prev: Option<u64> = None;
-    let mut sample = 0u64;
+    let mut acc = Changes { changes: vec![Vec::new(); meta.names.len()], prev: None, samples: 0 };
     let mut buf = Vec::new();
     for (_, name) in &chunks {
         buf.clear();
@@ -134,27 +131,43 @@ pub fn read(path: &Path) -> Result<Capture, CaptureError> {
                 meta.unitsize
             )));
         }
-        for w in buf.chunks_exact(meta.unitsize) {
+        acc.add(&buf, meta.unitsize);
+    }
+    if acc.samples == 0 {
+        return Err(CaptureError(format!("{file}: the capture holds no samples")));
+    }
+    Ok(Capture::from_changes(meta.samplerate, acc.samples, meta.names, acc.changes))
+}
+
+/// The channels' level changes of a session's logic data, chunk by chunk.
+struct Changes {
+    /// Per channel: (sample, new level) at each change, the first sample's level first.
+    changes: Vec<Vec<(u64, bool)>>,
+    /// The last sample's word.
+    prev: Option<u64>,
+    samples: u64,
+}
+
+impl Changes {
+    /// The samples of one chunk, `unitsize` little-endian bytes each, bit c = channel c.
+    fn add(&mut self, buf: &[u8], unitsize: usize) {
+        for w in buf.chunks_exact(unitsize) {
             let mut v = 0u64;
             for (k, b) in w.iter().enumerate() {
                 v |= (*b as u64) << (8 * k);
             }
-            let diff = prev.map_or(u64::MAX, |p| p ^ v);
+            let diff = self.prev.map_or(u64::MAX, |p| p ^ v);
             if diff != 0 {
-                for (c, ch) in changes.iter_mut().enumerate() {
+                for (c, ch) in self.changes.iter_mut().enumerate() {
                     if (diff >> c) & 1 != 0 {
-                        ch.push((sample, (v >> c) & 1 != 0));
+                        ch.push((self.samples, (v >> c) & 1 != 0));
                     }
                 }
-                prev = Some(v);
+                self.prev = Some(v);
             }
-            sample += 1;
+            self.samples += 1;
         }
     }
-    if sample == 0 {
-        return Err(CaptureError(format!("{file}: the capture holds no samples")));
-    }
-    Ok(Capture::from_changes(meta.samplerate, sample, meta.names, changes))
 }
 
 fn rate_text(hz: u64) -> String {
