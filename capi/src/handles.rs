@@ -99,7 +99,3 @@ pub(crate) unsafe fn out_ref<'a, T>(p: *mut T) -> Result<&'a mut T, c_int> {
 pub(crate) fn chip_of(variant: c_int) -> Result<Chip, c_int> {
     u32::try_from(variant).ok().and_then(Chip::from_rtl_param).ok_or(TMC429_ERR_ARG)
 }
-
-pub(crate) fn sext24(x: u32) -> i32 {
-    ((x << 8) as i32) >> 8
-}

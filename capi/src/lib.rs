@@ -26,6 +26,7 @@ use std::ffi::{c_char, c_int, c_uint};
 use std::sync::{Arc, Mutex};
 
 use tmc429_model::host::MIN_SCK_HALF;
+use tmc429_model::motor_regs::sext24;
 
 mod bytewise;
 pub use bytewise::*;

@@ -6,6 +6,7 @@
 use std::path::PathBuf;
 
 use tmc429_model::events::{Event as PinEvent, EventDecoder};
+use tmc429_model::motor_regs::sext24;
 use tmc429_model::{Chip, Outputs, Probes, Tmc429};
 use tmc429_testbench::cosim::{Mismatch, Outcome};
 use tmc429_testbench::rtl::{Rtl, Variant};
@@ -110,10 +111,6 @@ fn data_pin(o: &Outputs) -> u64 {
     } else {
         o.nint_sdo_c as u64
     }
-}
-
-fn sext24(v: u32) -> i32 {
-    ((v << 8) as i32) >> 8
 }
 
 /// Whether a condition holds in a state.

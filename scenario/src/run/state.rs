@@ -3,6 +3,7 @@
 use std::collections::VecDeque;
 
 use tmc429_model::events::EventDecoder;
+use tmc429_model::motor_regs::sext24;
 use tmc429_model::{Chip, Outputs, Probes};
 use tmc429_testbench::cosim::{Mismatch, TxnRecord, HISTORY};
 use tmc429_testbench::signals::{agree, diff, flatten};
@@ -10,8 +11,8 @@ use tmc429_testbench::stimulus::{Driver, Event, Frame, Phase, Txn};
 use tmc429_testbench::vectors::scenario::PinRuns;
 
 use super::{
-    count, data_pin, mismatch_report, motor_stats, next_check, sample, sext24, Engine, ExpectResult, Idle, MotorStats, Options, Queued,
-    Report, Sample, Shadow, Sim,
+    count, data_pin, mismatch_report, motor_stats, next_check, sample, Engine, ExpectResult, Idle, MotorStats, Options, Queued, Report,
+    Sample, Shadow, Sim,
 };
 use crate::scenario::{fmt_time, Action, Check, Expect, Scenario, PINS};
 use crate::vcdout::VcdWriter;
