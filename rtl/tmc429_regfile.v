@@ -1,17 +1,17 @@
-// tmc429_regfile: the register file and the motion core (docs/model-contract.md C20-C31,
-// C40-C66; TMC428 §7-§9, TMC429 §8). The driver side (tmc429_chain, _current, _stepdir,
-// _drvpins) takes its configuration from the `drv_*` ports and hands back the chain's
-// handshake (C85, C88, C89), readback (C87) and the multiplexed switches (C87).
+// tmc429_regfile: the register file (docs/model-contract.md C20-C31, C64-C66; TMC428 §7-§9,
+// TMC429 §8). The driver side (tmc429_chain, _current, _stepdir, _drvpins) takes its
+// configuration from the `drv_*` ports and hands back the chain's handshake (C85, C88, C89)
+// and readback (C87).
 //
-// Executes the 32-bit datagram `cmd` when `exec` pulses (C12), serves the read port of the
-// SPI slave (data of the old state), builds the status byte, the interrupt output, the
-// position compare and the power-down state. Holds the shared target velocity unit
-// (tmc429_vtarget), the ramp tick's arithmetic (tmc429_accel) and, per motor, the registers with
-// the ramp and pulse generator (tmc429_motor_regs, tmc429_ramp), which act in the slots of the
-// frame schedule (tmc429_schedule: its phase and ticks come in, the dividers and the writes of
-// clk_config go out). Per CHIP
-// (0 TMC428, 1 TMC429, 2 TMC4210) the registers a variant lacks read 0 and ignore writes (C21).
-// Register indices, fields and presence per variant: rtl/tmc429_regmap.vh.
+// Executes the 32-bit datagram `cmd` when `exec` pulses (C12): the global registers here, the
+// motors' registers, the RAM and the parameter RAMs of the shared motion units through the
+// decoded write (`w_*`, `mot_we`, `ram_we`), which tmc429_top wires to them. Serves the read
+// port of the SPI slave (data of the old state) from the shadow RAM and the read multiplexer
+// of the motors' and the RAM's read data, builds the status byte, the interrupt output, the
+// position compare and the power-down state, and holds v_min and dx_ref_tolerance for the
+// motor whose condition slot is next (tmc429_pram). Per CHIP (0 TMC428, 1 TMC429, 2 TMC4210)
+// the registers a variant lacks read 0 and ignore writes (C21). Register indices, fields and
+// presence per variant: rtl/tmc429_regmap.vh.
 `default_nettype none
 `include "tmc429_regmap.vh"
 `include "tmc429_schedule.vh"
@@ -31,36 +31,40 @@ module tmc429_regfile #(
     input  wire        rd_load,       // the SPI slave loads rd_data in this edge
     output reg  [23:0] rd_data,
     output wire        rd_round,      // rd_data's bits 11..0 are 1 more (v_actual's rounding, C42)
-    input  wire [2:0]  ref_q,         // synchronized REF3..1
-    input  wire [2:0]  refr_q,        // synchronized REFR3..1
+    // the decoded write: a register of a motor the variant has (mot_we, motor mot_sel), a RAM
+    // word (ram_we, address w_addr), the register index and the datagram's data
+    output wire        mot_we,
+    output wire [1:0]  mot_sel,
+    output wire        ram_we,
+    output wire [5:0]  w_addr,
+    output wire [3:0]  w_idx,
+    output wire [23:0] w_data,
+    output reg  [15:0] rd_idx,        // the read's register index, one-hot, registered (C10)
+    // read data and state of the motors (motor m in bits [w*(m+1)-1 : w*m]) and of the RAM
+    input  wire [71:0] m_rdata,
+    input  wire [2:0]  m_xeqt,        // x_actual = x_target (status byte, C44)
+    input  wire [2:0]  m_irq,         // the motor's interrupt request (C63)
+    input  wire [35:0] m_v_hi,        // V[19:8]: v_actual before its rounding (C42)
+    input  wire [2:0]  m_v_rnd,       // v_actual = V[19:8] + v_rnd
+    input  wire [71:0] m_x_actual,    // position compare (C65)
+    input  wire [11:0] ram_rdata,     // the RAM word at rd_addr_q (C30)
+    input  wire [2:0]  sw_l,          // mapped switches (tmc429_refsw, C60)
+    input  wire [2:0]  sw_r,
+    // v_min and dx_ref_tolerance - 1 of the motor whose condition slot is next (C52, C61)
+    output wire [10:0] cond_vmin,
+    output wire [12:0] cond_tol_m1,
     output wire [7:0]  status,        // INT CDGW RS3 xEQt3 RS2 xEQt2 RS1 xEQt1
     output reg         nint_q,        // nINT, registered from the state before the edge (C11)
     output wire        sdo_int,       // if_configuration sdo_int (TMC429/TMC4210)
     output reg         poscmp_q,      // position compare match, registered (C65)
     output reg         pd,            // powered down
     output wire        pd_nx,         // powered down after this edge (C66)
-    // frame schedule (tmc429_schedule): the phase prescaler[4:0], motor m's ticks in bit m, and
-    // the dividers motor m keeps in [4m+3:4m] with the writes of clk_config of this edge
+    // frame schedule (tmc429_schedule): the phase prescaler[4:0], and the writes of motor m's
+    // clk_config that execute in this edge (bit m) with their dividers
     input  wire [4:0]  phase,
-    input  wire [2:0]  cond_tick,
-    input  wire [2:0]  ramp_tick,
-    input  wire [2:0]  pulse_tick,
-    input  wire [2:0]  ramp_ld,       // the next edge is motor m's ramp phase
-    output wire [11:0] ramp_div,
-    output wire [11:0] pulse_div,
-    output wire [2:0]  w_div,         // a write of motor m's clk_config executes in this edge
-    output wire [3:0]  w_ramp_div,    // ... with these dividers
+    output wire [2:0]  w_div,
+    output wire [3:0]  w_ramp_div,
     output wire [3:0]  w_pulse_div,
-    // probes, motor m in bits [w*(m+1)-1 : w*m]
-    output wire [71:0] p_x_target,
-    output wire [71:0] p_x_actual,
-    output wire [59:0] p_v,
-    output wire [35:0] p_v_target,
-    output wire [35:0] p_a_actual,
-    output wire [23:0] p_ustep,
-    output wire [32:0] p_pulse_acc,
-    output wire [2:0]  p_step,
-    output wire [2:0]  p_dir,
     // driver side: configuration (old state, and new state for the output pin registers)
     output wire [23:0] drv_gconf,      // $7E as stored: mot1r refmux 000 cont_update clk2_div bits 7..0
     output wire [23:0] drv_gconf_nx,
@@ -68,7 +72,6 @@ module tmc429_regfile #(
     output wire [23:0] drv_gconf_wd,   // $7E as that write stores it
     output wire [8:0]  drv_ifconf,     // if_configuration (TMC429, TMC4210)
     output wire [8:0]  drv_ifconf_nx,
-    output wire [71:0] drv_conf,       // motor m in [24m+23:24m]: its current_scaling
     output wire        drv_cw,         // cover datagram waiting
     output wire        drv_dgw,        // datagram-word write waiting
     output wire        drv_dw_write,   // a datagram_low/high_word write executes in this edge
@@ -81,11 +84,7 @@ module tmc429_regfile #(
     input  wire        chain_ret_dgw,
     input  wire        chain_cover_busy,
     input  wire        chain_dgw_busy,
-    input  wire [47:0] chain_readback,
-    input  wire [5:0]  mux_sw,         // switches sampled through the 74HC157
-    input  wire        chain_ram_re,   // chain read port of the RAM (C80)
-    input  wire [6:0]  chain_ram_addr,
-    output wire [5:0]  chain_ram_q
+    input  wire [47:0] chain_readback
 );
     localparam HAS_CHAIN = `TMC429_HAS(`TMC429_CHIPS_DATAGRAM_LOW_WORD, CHIP);   // JDX 0..3 (driver chain)
     localparam HAS_429   = `TMC429_HAS(`TMC429_CHIPS_IF_CONFIGURATION, CHIP);   // JDX 4, 5, 6, 9
@@ -108,6 +107,12 @@ module tmc429_regfile #(
     wire        wr_ram = wr & a7[`TMC429_A7_RRS];
     wire        wr_reg = wr & ~a7[`TMC429_A7_RRS];                      // one of the 64 registers
     wire        wr_mot = wr_reg & ({1'b0, a7[`TMC429_A7_SMDA]} < NMOT3); // of a motor the variant has
+    assign mot_we  = wr_mot;
+    assign mot_sel = a7[`TMC429_A7_SMDA];
+    assign ram_we  = wr_ram;
+    assign w_addr  = a7[`TMC429_A7_ADDR];
+    assign w_idx   = jdx;
+    assign w_data  = wdata;
 
     // ---- write strobes one edge ahead -------------------------------------------------
     // The writes that the frame schedule and the driver side take into next states formed one
@@ -148,14 +153,6 @@ module tmc429_regfile #(
     wire run = ~pd;
     wire int_o;
 
-    // ---- switches -------------------------------------------------------------------
-    wire [2:0] sw_l, sw_r;
-    tmc429_refsw #(.CHIP(CHIP)) u_refsw (
-        .ref_q(ref_q), .refr_q(refr_q),
-        .inv_ref(if_conf[`TMC429_F_INV_REF]), .en_refr(if_conf[`TMC429_F_EN_REFR]),
-        .refmux(refmux), .mot1r(mot1r),
-        .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
-
     // ---- power down (C66) -------------------------------------------------------------
     // power_down after this edge: set by a write of it, else cleared by the waking frame start
     wire [4:0] ph      = phase;
@@ -171,12 +168,11 @@ module tmc429_regfile #(
     // starts at flip-flops (one-hot selects, AND-OR).
     reg         rq_ram, rq_glb, rq_va;
     reg  [2:0]  rq_mot;
-    reg  [15:0] rq_idx;
     reg  [23:0] rq_rst;
     integer     j;
     always @(posedge clk) begin
         if (rst) begin
-            rq_ram <= 1'b0;  rq_glb <= 1'b0;  rq_va <= 1'b0;  rq_mot <= 3'd0;  rq_idx <= 16'd0;
+            rq_ram <= 1'b0;  rq_glb <= 1'b0;  rq_va <= 1'b0;  rq_mot <= 3'd0;  rd_idx <= 16'd0;
             rq_rst <= 24'd0;
         end else begin
             rq_ram <= rd_addr[`TMC429_A7_RRS];
@@ -184,64 +180,27 @@ module tmc429_regfile #(
             for (j = 0; j < 3; j = j + 1)
                 rq_mot[j] <= (rd_addr[`TMC429_A7_SMDA] == j[1:0]) & (j < NMOT);
             for (j = 0; j < 16; j = j + 1)
-                rq_idx[j] <= rd_addr[`TMC429_A7_IDX] == j[3:0];
+                rd_idx[j] <= rd_addr[`TMC429_A7_IDX] == j[3:0];
             rq_va  <= (rd_addr[`TMC429_A7_SMDA] != `TMC429_SMDA_GLOBAL)
                     & (rd_addr[`TMC429_A7_IDX] == `TMC429_IDX_V_ACTUAL);
             rq_rst <= sh_rst(rd_addr[`TMC429_A7_REG]);
         end
     end
 
-    // ---- motors -----------------------------------------------------------------------
-    wire [71:0] m_rdata;      // read data of motor m in [24m+23:24m]
-    wire [2:0]  xeqt, irq;
-
-    wire [5:0]  m_rm;
-    wire [2:0]  m_brake_en;
-    wire [35:0] m_vt;
-    wire [59:0] m_v_hold;
-    wire [2:0]  m_stop_soft;
-    wire [2:0]  m_v_rnd;      // v_actual = V[19:8] + v_rnd of motor m
-    wire [19:0] v_rmp;
-    wire [11:0] a_rmp;
-    wire        mc_rmp;
-
+    // ---- clk_config writes, one edge ahead (the frame schedule's dividers) ------------------
     genvar g;
     generate
         for (g = 0; g < 3; g = g + 1) begin : mot
-            wire present = g < NMOT;
-            wire we_m  = wr_mot & (a7[`TMC429_A7_SMDA] == g);
             // a write of this motor's clk_config executes in this edge (one edge ahead, above)
             reg  w_clk;
             always @(posedge clk) begin
                 if (rst)
                     w_clk <= 1'b0;
                 else
-                    w_clk <= reg_nx & present & (a7_nx[`TMC429_A7_SMDA] == g)
+                    w_clk <= reg_nx & (g < NMOT) & (a7_nx[`TMC429_A7_SMDA] == g)
                            & (a7_nx[`TMC429_A7_IDX] == `TMC429_IDX_CLK_CONFIG);
             end
             assign w_div[g] = w_clk;
-            tmc429_motor_regs #(.CHIP(CHIP)) u_m (
-                .clk(clk), .rst(rst), .run(run & present),
-                .we(we_m), .widx(jdx), .wdata(wdata),
-                .rsel(rq_idx), .rdata(m_rdata[24*g+23:24*g]),
-                .sw_l(sw_l[g]), .sw_r(sw_r[g]),
-                .cond_tick(cond_tick[g]),
-                .ramp_tick(ramp_tick[g]),
-                .pulse_tick(pulse_tick[g]),
-                .vt(m_vt[12*g+11:12*g]),
-                .v_min(cond_vmin), .tol_m1(cond_tol_m1),
-                .v_hold(m_v_hold[20*g+19:20*g]),
-                .stop_soft(m_stop_soft[g]),
-                .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
-                .xeqt(xeqt[g]), .irq(irq[g]),
-                .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
-                .pulse_div(pulse_div[4*g+3:4*g]), .ramp_div(ramp_div[4*g+3:4*g]),
-                .brake_en(m_brake_en[g]),
-                .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]), .v_rnd(m_v_rnd[g]),
-                .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
-                .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
-                .step(p_step[g]), .dir(p_dir[g]),
-                .drv_conf(drv_conf[24*g+23:24*g]));
         end
     endgenerate
 
@@ -254,8 +213,6 @@ module tmc429_regfile #(
     // the reset value), the form of the window's comparison (tmc429_ramp); the forwarded copy
     // of a write is that difference registered (the datagram holds, so it is the written one),
     // so that its carry chain and the window's are not in one path.
-    wire [10:0] cond_vmin;
-    wire [12:0] cond_tol_m1;
     /* verilator lint_off UNUSEDSIGNAL */   // the word read: for a user taking a write of its edge
     wire [1:0]  cond_ra_v, cond_ra_t;
     /* verilator lint_on UNUSEDSIGNAL */
@@ -278,31 +235,13 @@ module tmc429_regfile #(
         .we(wr_mot & (jdx == `TMC429_IDX_DX_REF_TOLERANCE)), .wm(a7[`TMC429_A7_SMDA]),
         .wd(tol_wd), .fd(tol_fd), .ra(cond_ra_t), .val(cond_tol_m1));
 
-    // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
-    // C51): its operands are registered in the edge into a motor's ramp phase
-    tmc429_accel #(.NMOT(NMOT)) u_accel (
-        .clk(clk), .rst(rst), .ld(ramp_ld), .phase(ph),
-        .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft),
-        .a_max_we(wr_mot & (jdx == `TMC429_IDX_A_MAX)), .a_max_m(a7[`TMC429_A7_SMDA]),
-        .a_max_wd(wdata[`TMC429_F_A_MAX]),
-        .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
-
-    // ---- target velocity (C41, C50) -------------------------------------------------------
-    tmc429_vtarget #(.NMOT(NMOT), .ROOT_SPEC(0)) u_vt (
-        .clk(clk), .rst(rst), .run(run), .phase(ph),
-        .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
-        .v_target(p_v_target), .brake_en(m_brake_en),
-        .cfg_we(wr_mot), .cfg_m(a7[`TMC429_A7_SMDA]), .cfg_idx(jdx),
-        .cfg_data(wdata[`TMC429_F_PMUL_MSB - 1:0]),   // every bit v_min, v_max, a_max, pmul_pdiv store
-        .vt(m_vt));
-
     // ---- position compare (C65) -------------------------------------------------------
     reg [23:0] pc_x;
     always @(*) begin
         case (if_conf[`TMC429_F_POS_COMP_SEL])
-        2'd0:    pc_x = p_x_actual[23:0];
-        2'd1:    pc_x = p_x_actual[47:24];
-        default: pc_x = p_x_actual[71:48];   // 3 selects motor 3 as well
+        2'd0:    pc_x = m_x_actual[23:0];
+        2'd1:    pc_x = m_x_actual[47:24];
+        default: pc_x = m_x_actual[71:48];   // 3 selects motor 3 as well
         endcase
     end
     wire pc_match = HAS_429 && (pc_x == pos_comp);
@@ -313,7 +252,7 @@ module tmc429_regfile #(
     wire pc_w1c   = w_pcint & wdata[`TMC429_F_POS_COMP_INT_I];
 
     assign sdo_int = HAS_429 && if_conf[`TMC429_F_SDO_INT];
-    assign int_o   = (|irq) | (pc_i & pc_m);
+    assign int_o   = (|m_irq) | (pc_i & pc_m);
     // RSn = Ln ([429] §6.2.2.2, C60)
 `ifdef PLANT_BUG_STATUS
     // Planted bug for the co-simulation self-test (testbench/tests/planted_bug.rs):
@@ -323,7 +262,7 @@ module tmc429_regfile #(
     // C88: CDGW = cw OR the datagram-word flag, each waiting or taken by the datagram under way
     wire   cdgw    = cw | dw | chain_cover_busy | chain_dgw_busy;
 `endif
-    assign status  = {int_o, cdgw, sw_l[2], xeqt[2], sw_l[1], xeqt[1], sw_l[0], xeqt[0]};
+    assign status  = {int_o, cdgw, sw_l[2], m_xeqt[2], sw_l[1], m_xeqt[1], sw_l[0], m_xeqt[0]};
 
     // ---- driver side ------------------------------------------------------------------
     assign drv_gconf     = ({23'd0, mot1r} << `TMC429_F_MOT1R) | ({23'd0, refmux} << `TMC429_F_REFMUX)
@@ -412,15 +351,6 @@ module tmc429_regfile #(
         end
     end
 
-    // ---- RAM (C30) --------------------------------------------------------------------
-    wire [11:0] ram_rdata;
-    tmc429_ram #(.CHIP(CHIP)) u_ram (
-        .clk(clk), .rst(rst),
-        .we(wr_ram), .waddr(a7[`TMC429_A7_ADDR]),
-        .wdata({wdata[`TMC429_F_RAM_ODD], wdata[`TMC429_F_RAM_EVEN]}),
-        .raddr(rd_addr_q), .rdata(ram_rdata),
-        .re2(chain_ram_re), .raddr2(chain_ram_addr), .rdata2(chain_ram_q));
-
     // ---- shadow RAM of the read values (C20-C29) -------------------------------------------
     // A register that only the µC writes reads back what the write stored: each write of a
     // register address (0..63) also stores its read value, formatted, in a word of the shadow
@@ -506,12 +436,12 @@ module tmc429_regfile #(
     wire [23:0] sh_data = sh_wq ? sh_q : rq_rst;
 
     // ---- read mux ---------------------------------------------------------------------
-    wire        rq_sw  = rq_idx[`TMC429_JDX_REF_SWITCHES];
-    wire [23:0] st_glb = ({24{rq_idx[`TMC429_JDX_DATAGRAM_LOW_WORD] & HAS_CHAIN}} & chain_readback[23:0])
-                       | ({24{rq_idx[`TMC429_JDX_DATAGRAM_HIGH_WORD] & HAS_CHAIN}} & chain_readback[47:24])
-                       | ({23'd0, rq_idx[`TMC429_JDX_COVER_POS_LEN] & HAS_CHAIN & (cw | chain_cover_busy)}
+    wire        rq_sw  = rd_idx[`TMC429_JDX_REF_SWITCHES];
+    wire [23:0] st_glb = ({24{rd_idx[`TMC429_JDX_DATAGRAM_LOW_WORD] & HAS_CHAIN}} & chain_readback[23:0])
+                       | ({24{rd_idx[`TMC429_JDX_DATAGRAM_HIGH_WORD] & HAS_CHAIN}} & chain_readback[47:24])
+                       | ({23'd0, rd_idx[`TMC429_JDX_COVER_POS_LEN] & HAS_CHAIN & (cw | chain_cover_busy)}
                           << `TMC429_F_CW)
-                       | ({23'd0, rq_idx[`TMC429_JDX_POS_COMP_INT] & HAS_429 & pc_i} << `TMC429_F_POS_COMP_INT_I)
+                       | ({23'd0, rd_idx[`TMC429_JDX_POS_COMP_INT] & HAS_429 & pc_i} << `TMC429_F_POS_COMP_INT_I)
                        | ({23'd0, rq_sw & sw_r[0]} << `TMC429_F_R1) | ({23'd0, rq_sw & sw_l[0]} << `TMC429_F_L1)
                        | ({23'd0, rq_sw & sw_r[1]} << `TMC429_F_R2) | ({23'd0, rq_sw & sw_l[1]} << `TMC429_F_L2)
                        | ({23'd0, rq_sw & sw_r[2]} << `TMC429_F_R3) | ({23'd0, rq_sw & sw_l[2]} << `TMC429_F_L3);
@@ -522,8 +452,8 @@ module tmc429_regfile #(
                         | ({24{rq_glb}} & st_glb);
     // v_actual (V >> 8 rounded toward 0, C42): V[19:8] of the selected motor and its rounding
     // bit (a LUT of flip-flops in tmc429_ramp), which the SPI slave adds in the next edge
-    wire [11:0] v_sel  = ({12{rq_mot[0]}} & p_v[19:8]) | ({12{rq_mot[1]}} & p_v[39:28])
-                       | ({12{rq_mot[2]}} & p_v[59:48]);
+    wire [11:0] v_sel  = ({12{rq_mot[0]}} & m_v_hi[11:0]) | ({12{rq_mot[1]}} & m_v_hi[23:12])
+                       | ({12{rq_mot[2]}} & m_v_hi[35:24]);
     wire        v_up   = |(rq_mot & m_v_rnd);
     // rd_data is 0 outside the edge that loads it (rd_load): the value matters in that edge
     // alone, and a simulator then evaluates the multiplexer only when a read takes it (the

@@ -6,9 +6,11 @@
 // (tmc429_model::Probes) that co-simulation compares every cycle.
 //
 // Blocks present: synchronizers (C4), µC SPI slave (C10-C13), frame schedule (C40, C41), register
-// file (C20-C31) with the motion core (C42-C66: target velocity, ramp and pulse generators, switch
-// stop, latch, interrupts), RAM (C30), and the driver side: current scaling (C75-C77), driver chain
-// with the microstep unit (C70-C74, C80-C89), Step/Dir (C91-C96), driver pins (C81, C87, C90).
+// file (C20-C31, C64-C66), RAM (C30), switches (C60), the motion core (C42-C63: per motor its
+// registers with the ramp and pulse generator, switch stop, latch and interrupts; shared by the
+// motors the target velocity and the ramp tick's arithmetic), and the driver side: current
+// scaling (C75-C77), driver chain with the microstep unit (C70-C74, C80-C89), Step/Dir
+// (C91-C96), driver pins (C81, C87, C90). This module only wires them.
 `default_nettype none
 `include "tmc429_regmap.vh"
 
@@ -93,8 +95,9 @@ module tmc429_top #(
         .rd_load(rd_load), .frame_start(frame_start), .exec(exec), .cmd(cmd),
         .exec_nx(exec_nx), .addr_nx(addr_nx), .active(active), .sdo(sdo));
 
-    // ---- register file and motion core ---------------------------------------------------
+    // ---- register file (C20-C31, C64-C66) -------------------------------------------------
     wire        nint_q, sdo_int, poscmp_q, pd;
+    wire        run = ~pd;     // everything behind the SPI slave stops while powered down (C66)
     wire [19:0] prescaler;
     wire [71:0] p_x_target, p_x_actual;
     wire [59:0] p_v;
@@ -102,6 +105,20 @@ module tmc429_top #(
     wire [23:0] p_ustep;
     wire [32:0] p_pulse_acc;
     wire [2:0]  p_step, p_dir;
+    // the decoded write and the read's register index
+    wire        mot_we, ram_we;
+    wire [1:0]  mot_sel;
+    wire [5:0]  w_addr;
+    wire [3:0]  w_idx;
+    wire [23:0] w_data;
+    wire [15:0] rd_idx;
+    // motors -> register file
+    wire [71:0] m_rdata;
+    wire [2:0]  m_xeqt, m_irq, m_v_rnd;
+    wire [11:0] ram_rdata;
+    wire [2:0]  sw_l, sw_r;
+    wire [10:0] cond_vmin;
+    wire [12:0] cond_tol_m1;
     // driver side <-> register file (whole registers; the driver side uses some fields)
     /* verilator lint_off UNUSEDSIGNAL */
     wire [23:0] gconf, gconf_nx, gconf_wd;
@@ -110,7 +127,7 @@ module tmc429_top #(
     wire [71:0] drv_conf;     // current_scaling of motor m in [24m+23:24m]
     wire [23:0] drv_m0 = drv_conf[23:0], drv_m1 = drv_conf[47:24], drv_m2 = drv_conf[71:48];
     /* verilator lint_on UNUSEDSIGNAL */
-    // frame schedule <-> register file
+    // frame schedule <-> register file and motors
     wire        pd_nx;
     wire [2:0]  cond_tick, rtick, rtick_nx, ptick, ramp_ld, w_div;
     wire [11:0] ramp_div, pulse_div;
@@ -126,25 +143,90 @@ module tmc429_top #(
         .clk(clk), .rst(rst),
         .exec(exec), .cmd(cmd), .exec_nx(exec_nx), .addr_nx(addr_nx), .frame_start(frame_start),
         .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_load(rd_load), .rd_data(rd_data), .rd_round(rd_round),
-        .ref_q(ref_q), .refr_q(refr_q),
+        .mot_we(mot_we), .mot_sel(mot_sel), .ram_we(ram_we), .w_addr(w_addr), .w_idx(w_idx),
+        .w_data(w_data), .rd_idx(rd_idx),
+        .m_rdata(m_rdata), .m_xeqt(m_xeqt), .m_irq(m_irq),
+        .m_v_hi({p_v[59:48], p_v[39:28], p_v[19:8]}), .m_v_rnd(m_v_rnd), .m_x_actual(p_x_actual),
+        .ram_rdata(ram_rdata), .sw_l(sw_l), .sw_r(sw_r),
+        .cond_vmin(cond_vmin), .cond_tol_m1(cond_tol_m1),
         .status(status), .nint_q(nint_q), .sdo_int(sdo_int),
         .poscmp_q(poscmp_q), .pd(pd), .pd_nx(pd_nx),
-        .phase(prescaler[4:0]), .cond_tick(cond_tick), .ramp_tick(rtick), .pulse_tick(ptick),
-        .ramp_ld(ramp_ld), .ramp_div(ramp_div), .pulse_div(pulse_div),
+        .phase(prescaler[4:0]),
         .w_div(w_div), .w_ramp_div(w_ramp_div), .w_pulse_div(w_pulse_div),
-        .p_x_target(p_x_target), .p_x_actual(p_x_actual), .p_v(p_v),
-        .p_v_target(p_v_target), .p_a_actual(p_a_actual), .p_ustep(p_ustep),
-        .p_pulse_acc(p_pulse_acc), .p_step(p_step), .p_dir(p_dir),
         .drv_gconf(gconf), .drv_gconf_nx(gconf_nx),
         .drv_gconf_we(gconf_we), .drv_gconf_wd(gconf_wd), .drv_ifconf(ifconf),
-        .drv_ifconf_nx(ifconf_nx), .drv_conf(drv_conf),
+        .drv_ifconf_nx(ifconf_nx),
         .drv_cw(cw), .drv_dgw(dgw), .drv_dw_write(dw_write),
         .drv_cover_pos(cover_pos), .drv_cover_len(cover_len),
         .drv_cover_datagram(cover_datagram),
         .chain_take(take), .chain_ret_cw(ret_cw), .chain_ret_dgw(ret_dgw),
-        .chain_cover_busy(cover_busy), .chain_dgw_busy(dgw_busy), .chain_readback(readback),
-        .mux_sw(mux_sw), .chain_ram_re(ram_re), .chain_ram_addr(ram_addr),
-        .chain_ram_q(ram_q));
+        .chain_cover_busy(cover_busy), .chain_dgw_busy(dgw_busy), .chain_readback(readback));
+
+    // ---- RAM (C30): µC port and driver chain port ------------------------------------------
+    tmc429_ram #(.CHIP(CHIP)) u_ram (
+        .clk(clk), .rst(rst),
+        .we(ram_we), .waddr(w_addr),
+        .wdata({w_data[`TMC429_F_RAM_ODD], w_data[`TMC429_F_RAM_EVEN]}),
+        .raddr(rd_addr_q), .rdata(ram_rdata),
+        .re2(ram_re), .raddr2(ram_addr), .rdata2(ram_q));
+
+    // ---- switches (C60) -------------------------------------------------------------------
+    tmc429_refsw #(.CHIP(CHIP)) u_refsw (
+        .ref_q(ref_q), .refr_q(refr_q),
+        .inv_ref(ifconf[`TMC429_F_INV_REF]), .en_refr(ifconf[`TMC429_F_EN_REFR]),
+        .refmux(gconf[`TMC429_F_REFMUX]), .mot1r(gconf[`TMC429_F_MOT1R]),
+        .mux_sw(mux_sw), .l(sw_l), .r(sw_r));
+
+    // ---- motors (C21-C29, C42-C63): registers, ramp and pulse generator, interrupts ---------
+    localparam NMOT = `TMC429_MOTORS(CHIP);   // TMC4210: one motor
+    wire [5:0]  m_rm;
+    wire [2:0]  m_brake_en, m_stop_soft;
+    wire [35:0] m_vt;
+    wire [59:0] m_v_hold;
+    wire [19:0] v_rmp;
+    wire [11:0] a_rmp;
+    wire        mc_rmp;
+    genvar g;
+    generate
+        for (g = 0; g < 3; g = g + 1) begin : mot
+            tmc429_motor_regs #(.CHIP(CHIP)) u_m (
+                .clk(clk), .rst(rst), .run(run & (g < NMOT)),
+                .we(mot_we & (mot_sel == g)), .widx(w_idx), .wdata(w_data),
+                .rsel(rd_idx), .rdata(m_rdata[24*g+23:24*g]),
+                .sw_l(sw_l[g]), .sw_r(sw_r[g]),
+                .cond_tick(cond_tick[g]), .ramp_tick(rtick[g]), .pulse_tick(ptick[g]),
+                .vt(m_vt[12*g+11:12*g]), .v_min(cond_vmin), .tol_m1(cond_tol_m1),
+                .v_hold(m_v_hold[20*g+19:20*g]), .stop_soft(m_stop_soft[g]),
+                .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
+                .xeqt(m_xeqt[g]), .irq(m_irq[g]),
+                .x_target(p_x_target[24*g+23:24*g]), .rm(m_rm[2*g+1:2*g]),
+                .pulse_div(pulse_div[4*g+3:4*g]), .ramp_div(ramp_div[4*g+3:4*g]),
+                .brake_en(m_brake_en[g]),
+                .x_actual(p_x_actual[24*g+23:24*g]), .v(p_v[20*g+19:20*g]), .v_rnd(m_v_rnd[g]),
+                .v_target(p_v_target[12*g+11:12*g]), .a_actual(p_a_actual[12*g+11:12*g]),
+                .ustep(p_ustep[8*g+7:8*g]), .pulse_acc(p_pulse_acc[11*g+10:11*g]),
+                .step(p_step[g]), .dir(p_dir[g]),
+                .drv_conf(drv_conf[24*g+23:24*g]));
+        end
+    endgenerate
+
+    // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
+    // C51): its operands are registered in the edge into a motor's ramp phase
+    tmc429_accel #(.NMOT(NMOT)) u_accel (
+        .clk(clk), .rst(rst), .ld(ramp_ld), .phase(prescaler[4:0]),
+        .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft),
+        .a_max_we(mot_we & (w_idx == `TMC429_IDX_A_MAX)), .a_max_m(mot_sel),
+        .a_max_wd(w_data[`TMC429_F_A_MAX]),
+        .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
+
+    // ---- target velocity, one datapath for the three motors (C41, C50) ---------------------
+    tmc429_vtarget #(.NMOT(NMOT), .ROOT_SPEC(0)) u_vt (
+        .clk(clk), .rst(rst), .run(run), .phase(prescaler[4:0]),
+        .rm(m_rm), .x_target(p_x_target), .x_actual(p_x_actual),
+        .v_target(p_v_target), .brake_en(m_brake_en),
+        .cfg_we(mot_we), .cfg_m(mot_sel), .cfg_idx(w_idx),
+        .cfg_data(w_data[`TMC429_F_PMUL_MSB - 1:0]),   // every bit v_min, v_max, a_max, pmul_pdiv store
+        .vt(m_vt));
 
     // ---- frame schedule (C40, C41) -----------------------------------------------------------
     tmc429_schedule u_sched (
@@ -171,7 +253,6 @@ module tmc429_top #(
     wire [2:0] m_step = {probe_m2_step, probe_m1_step, probe_m0_step};
     wire [2:0] m_dir  = {probe_m2_dir, probe_m1_dir, probe_m0_dir};
     wire [2:0] v_nz   = {|probe_m2_v_internal, |probe_m1_v_internal, |probe_m0_v_internal};
-    wire       run    = ~pd;
     // driver interface mode (C89, C91): en_sd of if_configuration
     wire       spi_mode = (CHIP == 0) | ((CHIP == 1) & ~ifconf[`TMC429_F_EN_SD]);
     wire       spi_nx   = (CHIP == 0) | ((CHIP == 1) & ~ifconf_nx[`TMC429_F_EN_SD]);
