@@ -77,7 +77,6 @@ module tmc429_vtarget #(
     reg [2:0]  n_c_out;
     reg [1:0]  n_a_m;
     reg [2:0]  n_b_k;
-    wire [4:0] phase_nx = phase + {4'd0, run};
     // motor m's stages from its snapshot phase Sm = TMC429_PH_SNAPSHOT(m): A at Sm (snapshot),
     // Sm + 1 (c), Sm + 2 .. Sm + 5 (multiply); B at Sm + 6 .. Sm + 12 (k = 0 .. 6, the load at
     // k = 0); C at Sm + 13 (c_pre) and the commit edge Sm + 14 = TMC429_PH_COMMIT(m)
@@ -85,35 +84,51 @@ module tmc429_vtarget #(
     localparam [4:0] S0 = `TMC429_PH_SNAPSHOT(0);
     localparam [4:0] S1 = `TMC429_PH_SNAPSHOT(1);
     localparam [4:0] S2 = `TMC429_PH_SNAPSHOT(2);
+    // the phases of each stage, one bit per phase: a pattern from the lane's start, for the
+    // three lanes
+    function [31:0] lanes;
+        input [31:0] pat;
+        input [4:0]  off;
+        begin
+            lanes = (pat << (S0 + off)) | (pat << (S1 + off)) | (pat << (S2 + off));
+        end
+    endfunction
+    localparam [31:0] PH_SNAP = lanes(32'h1, 5'd0);
+    localparam [31:0] PH_M1   = 32'd1 << S1;                 // the snapshot's motor, 1 ...
+    localparam [31:0] PH_M2   = 32'd1 << S2;                 // ... and 2
+    localparam [31:0] PH_C    = lanes(32'h1, 5'd1);
+    localparam [31:0] PH_MUL  = lanes(32'hF, 5'd2);
+    localparam [31:0] PH_LOAD = lanes(32'h1, 5'd6);
+    localparam [31:0] PH_B    = lanes(32'h7F, 5'd6);
+    localparam [31:0] PH_BK0  = lanes(32'b0101010, 5'd6);   // B's cycle index k, bit 0 ...
+    localparam [31:0] PH_BK1  = lanes(32'b1001100, 5'd6);   // ... bit 1 (k = 2, 3, 6) ...
+    localparam [31:0] PH_BK2  = lanes(32'b1110000, 5'd6);   // ... bit 2 (k = 4, 5, 6)
+    localparam [31:0] PH_CPRE = lanes(32'h1, 5'd13);
+    localparam [31:0] PH_CO0  = 32'd1 << `TMC429_PH_COMMIT(0);
+    localparam [31:0] PH_CO1  = 32'd1 << `TMC429_PH_COMMIT(1);
+    localparam [31:0] PH_CO2  = 32'd1 << `TMC429_PH_COMMIT(2);
+    // the phase after this edge (p + 1 while running, else p) is one of the set m: m's bit p,
+    // or the bit p of m rotated by one phase, so that no sum p + run is in front of the decode
+    function nx_in;
+        input [31:0] m;
+        input [4:0]  p;
+        input        r;
+        reg   [31:0] m_r;
+        begin
+            m_r   = {m[0], m[31:1]};
+            nx_in = r ? m_r[p] : m[p];
+        end
+    endfunction
     always @(*) begin
-        n_a_snap = 1'b0; n_a_c = 1'b0; n_a_mul = 1'b0; n_b_load = 1'b0; n_b_run = 1'b0;
-        n_c_pre = 1'b0; n_c_out = 3'd0; n_a_m = 2'd0; n_b_k = 3'd0;
-        case (phase_nx)
-        S0: begin n_a_snap = 1'b1; n_a_m = 2'd0; end
-        S1: begin n_a_snap = 1'b1; n_a_m = 2'd1; end
-        S2: begin n_a_snap = 1'b1; n_a_m = 2'd2; end
-        S0 + 5'd1, S1 + 5'd1, S2 + 5'd1: n_a_c = 1'b1;
-        S0 + 5'd2, S0 + 5'd3, S0 + 5'd4, S0 + 5'd5, S1 + 5'd2, S1 + 5'd3, S1 + 5'd4, S1 + 5'd5,
-        S2 + 5'd2, S2 + 5'd3, S2 + 5'd4, S2 + 5'd5: n_a_mul = 1'b1;
-        default: ;
-        endcase
-        case (phase_nx)
-        S0 + 5'd6, S1 + 5'd6, S2 + 5'd6:    begin n_b_load = 1'b1; n_b_run = 1'b1; n_b_k = 3'd0; end
-        S0 + 5'd7, S1 + 5'd7, S2 + 5'd7:    begin n_b_run = 1'b1; n_b_k = 3'd1; end
-        S0 + 5'd8, S1 + 5'd8, S2 + 5'd8:    begin n_b_run = 1'b1; n_b_k = 3'd2; end
-        S0 + 5'd9, S1 + 5'd9, S2 + 5'd9:    begin n_b_run = 1'b1; n_b_k = 3'd3; end
-        S0 + 5'd10, S1 + 5'd10, S2 + 5'd10: begin n_b_run = 1'b1; n_b_k = 3'd4; end
-        S0 + 5'd11, S1 + 5'd11, S2 + 5'd11: begin n_b_run = 1'b1; n_b_k = 3'd5; end
-        S0 + 5'd12, S1 + 5'd12, S2 + 5'd12: begin n_b_run = 1'b1; n_b_k = 3'd6; end
-        default: ;
-        endcase
-        case (phase_nx)
-        S0 + 5'd13, S1 + 5'd13, S2 + 5'd13: n_c_pre = 1'b1;
-        `TMC429_PH_COMMIT(0): n_c_out = 3'b001;
-        `TMC429_PH_COMMIT(1): n_c_out = 3'b010;
-        `TMC429_PH_COMMIT(2): n_c_out = 3'b100;
-        default: ;
-        endcase
+        n_a_snap = nx_in(PH_SNAP, phase, run);
+        n_a_m    = {nx_in(PH_M2, phase, run), nx_in(PH_M1, phase, run)};
+        n_a_c    = nx_in(PH_C, phase, run);
+        n_a_mul  = nx_in(PH_MUL, phase, run);
+        n_b_load = nx_in(PH_LOAD, phase, run);
+        n_b_run  = nx_in(PH_B, phase, run);
+        n_b_k    = {nx_in(PH_BK2, phase, run), nx_in(PH_BK1, phase, run), nx_in(PH_BK0, phase, run)};
+        n_c_pre  = nx_in(PH_CPRE, phase, run);
+        n_c_out  = {nx_in(PH_CO2, phase, run), nx_in(PH_CO1, phase, run), nx_in(PH_CO0, phase, run)};
     end
     always @(posedge clk) begin
         if (rst) begin
