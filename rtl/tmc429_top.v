@@ -112,7 +112,7 @@ module tmc429_top #(
     wire [3:0]  w_idx;
     wire [23:0] w_data;
     wire [15:0] rd_idx;
-    // motors -> register file
+    // motors, RAM and switch mapping <-> register file
     wire [71:0] m_rdata;
     wire [2:0]  m_xeqt, m_irq, m_v_rnd;
     wire [11:0] ram_rdata;
