@@ -6,6 +6,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use tmc429_model as model;
+use tmc429_model::motor_regs::sext24;
 use tmc429_verif::pinword;
 
 /// The input pins before a CLK edge (TMC429 §1.5 names; the TMC4210 uses REF1 as REF_L, REF2
@@ -177,10 +178,6 @@ pub struct Probes {
     pub power_down: bool,
     /// The status byte as it would be sent now (C10).
     pub status: u8,
-}
-
-fn sext24(x: u32) -> i32 {
-    ((x << 8) as i32) >> 8
 }
 
 impl From<model::Probes> for Probes {
