@@ -6,6 +6,42 @@ use std::process::Command;
 mod vectors_common;
 use vectors_common::*;
 
+/// Icarus Verilog build of a unit's replay testbench `vectors/tb/TB.v` with the RTL files it
+/// wires (names under rtl/), for the TMC429 (CHIP = 1).
+fn build_unit_tb(dir: &std::path::Path, tb: &str, rtl: &[&str]) -> std::path::PathBuf {
+    let vvp = dir.join(format!("{tb}.vvp"));
+    let mut cmd = Command::new("iverilog");
+    cmd.args(["-g2005", "-P", &format!("{tb}.CHIP=1"), "-I"]).arg(root().join("vectors/tb")).arg("-I").arg(root().join("rtl"));
+    cmd.arg("-o").arg(&vvp).arg(root().join(format!("vectors/tb/{tb}.v")));
+    for f in rtl {
+        cmd.arg(root().join("rtl").join(f));
+    }
+    let o = cmd.output().expect("iverilog (scripts/setup installs it)");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    vvp
+}
+
+/// Bits `lo .. lo + w` of a vector line's word (hex digits, bit 0 the last digit's lowest).
+fn word_field(l: &str, lo: usize, w: usize) -> u64 {
+    let bit = |b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
+    (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(b))
+}
+
+/// A copy of the vector lines with line `k` changed: each `(digit, mask)` XORs the mask into the
+/// hex digit at that position from the left (an expected bit and the same bit of the check
+/// digit, so that the file stays valid), written as `planted.hex` in `dir`.
+fn plant(dir: &std::path::Path, lines: &[&str], k: usize, digits: &[(usize, u32)]) -> std::path::PathBuf {
+    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let mut c: Vec<char> = bad[k].chars().collect();
+    for &(i, x) in digits {
+        c[i] = char::from_digit(c[i].to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
+    }
+    bad[k] = c.into_iter().collect();
+    let planted = dir.join("planted.hex");
+    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    planted
+}
+
 /// The chip-hold vectors replay clean; with PLANT_BUG_STATUS (CDGW ignores the datagram-word
 /// flag) the first mismatch is the status byte's bit 30 on the data pins, in the 8-bit status
 /// frame after the datagram_low_word write: frame start + setup (3) + bit 0 (2·3) = SCK_C falls
@@ -120,31 +156,13 @@ fn lut_pins_replay_and_report_a_planted_fault() {
     // i_scale %100 (Table 8-1): rows 4·4 + 1 → (63 · 4) >> 3 = 31
     assert_eq!(ports(lines[2 * (4 * 4 + 1)]), (64, 0, 63, 63, 31));
 
-    let vvp = dir.join("tb_lut.vvp");
-    let o = Command::new("iverilog")
-        .args(["-g2005", "-P", "tb_lut.CHIP=1", "-I"])
-        .arg(root().join("vectors/tb"))
-        .arg("-o")
-        .arg(&vvp)
-        .arg(root().join("vectors/tb/tb_lut.v"))
-        .arg(root().join("rtl/tmc429_microstep.v"))
-        .output()
-        .expect("iverilog (scripts/setup installs it)");
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let vvp = build_unit_tb(&dir, "tb_lut", &["tmc429_microstep.v"]);
     let out = replay(&vvp, &stem, None);
     assert_eq!(out.last().unwrap(), &format!("{} passed, 0 failed", lines.len()), "{out:?}");
 
     // flip bit_out (bit 1 of digit 12) of line 1000 and the same bit of the check digit
-    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
-    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
-    let b = bad[1000].as_bytes().to_vec();
     let expected = (field(lines[1000], 5, 1), field(lines[1000], 5, 1) ^ 1);
-    let mut s: String = b[..12].iter().map(|c| *c as char).collect();
-    s.push(flip(b[12], 2));
-    s.push(flip(b[13], 2));
-    bad[1000] = s;
-    let planted = dir.join("planted.hex");
-    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let planted = plant(&dir, &lines, 1000, &[(12, 2), (13, 2)]);
     let out = replay(&vvp, &stem, Some(&planted));
     assert_eq!(
         out[..2],
@@ -157,37 +175,45 @@ fn lut_pins_replay_and_report_a_planted_fault() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// Pin-level ramp vectors (tmc429_ramp) of the reference search: the motors one after the
-/// other, each from its reset line; motor 0's switch stop (C61), its zeroing by a µC write
-/// (C3) and its RAMP_MODE move ending on x_target = 40 with V = 0 (C52); a clean replay, and a
-/// flipped expected `stop` bit in a copy that the replay reports at its line and column.
-#[test]
-fn ramp_pins_replay_and_report_a_planted_fault() {
-    let dir = tmpdir("ramppins");
-    export(&dir, &["--unit", "ramp", "--scenario", "reference-search", "--format", "pins"]);
+/// The reference search's pin-level ramp vectors (tmc429_ramp) in `dir`: their stem, their
+/// text and the number of lines of each motor. Word bits: _sentinel 251..248 | inputs 247..133 (rst 247, cond_tick
+/// 245, we 161, widx 160..157, wdata 156..133) | outputs 132..4 (x_actual 132..109, v 108..89,
+/// xeqt 18, stop 17) | _check 3..0.
+fn ramp_pins(dir: &std::path::Path) -> (std::path::PathBuf, String, usize) {
+    export(dir, &["--unit", "ramp", "--scenario", "reference-search", "--format", "pins"]);
     let stem = dir.join("ramp-reference-search-tmc429");
     assert_eq!(meta(&stem, "width"), "252");
     let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
-    let lines: Vec<&str> = hex.lines().collect();
     let cycles: usize = meta(&stem, "cycles").parse().unwrap();
-    assert_eq!((lines.len(), cycles % 3), (cycles, 0));
-    let per = cycles / 3;
-    // word bits: _sentinel 251..248 | inputs 247..133 (rst 247, cond_tick 245, we 161,
-    // widx 160..157, wdata 156..133) | outputs 132..4 (x_actual 132..109, v 108..89, xeqt 18,
-    // stop 17) | _check 3..0
-    let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
-    let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
+    assert_eq!((hex.lines().count(), cycles % 3), (cycles, 0));
+    (stem, hex, cycles / 3)
+}
+
+/// The first line of a motor's ramp vectors after its switch stop: the stop condition held
+/// in the edge before the motor's condition slot and in the slot (C52, C61).
+fn after_switch_stop(m: &[&str]) -> usize {
+    1 + m
+        .windows(2)
+        .position(|w| word_field(w[0], 17, 1) == 1 && word_field(w[1], 17, 1) == 1 && word_field(w[1], 245, 1) == 1)
+        .expect("a switch stop")
+}
+
+/// Pin-level ramp vectors (tmc429_ramp) of the reference search: the motors one after the
+/// other, each from its reset line; motor 0's switch stop (C61), its zeroing by a µC write
+/// (C3) and its RAMP_MODE move ending on x_target = 40 with V = 0 (C52); motor 1 holds.
+#[test]
+fn ramp_pins_of_the_reference_search() {
+    let dir = tmpdir("ramppins-values");
+    let (_, hex, per) = ramp_pins(&dir);
+    let lines: Vec<&str> = hex.lines().collect();
+    let field = word_field;
     for m in 0..3 {
         assert_eq!(field(lines[m * per], 247, 1), 1, "motor {m} begins with its reset line");
         assert_eq!(field(lines[m * per + 1], 247, 1), 0);
     }
     let m0 = &lines[..per];
-    // the switch stop holds while REF1 is high and motor 0 moves left; the motor's condition
-    // slot takes the condition of the edge before it (C52, C61), V is 0 after it
-    let s = 1 + m0
-        .windows(2)
-        .position(|w| field(w[0], 17, 1) == 1 && field(w[1], 17, 1) == 1 && field(w[1], 245, 1) == 1)
-        .expect("a switch stop");
+    // V is 0 after the switch stop
+    let s = after_switch_stop(m0);
     assert_eq!(field(m0[s + 1], 89, 20), 0);
     // the µC write x_actual := 0 (IDX 1) is executed in its edge
     let z = m0.iter().position(|l| field(l, 161, 1) == 1 && field(l, 157, 4) == 1).expect("x_actual write");
@@ -198,43 +224,29 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
     assert_eq!((field(last, 109, 24), field(last, 89, 20), field(last, 18, 1)), (40, 0, 1));
     // motor 1 holds at 0 all along
     assert!(lines[per..2 * per].iter().all(|l| field(l, 109, 24) == 0 && field(l, 89, 20) == 0));
+    std::fs::remove_dir_all(&dir).ok();
+}
 
-    let vvp = dir.join("tb_ramp.vvp");
-    let o = Command::new("iverilog")
-        .args(["-g2005", "-P", "tb_ramp.CHIP=1", "-I"])
-        .arg(root().join("vectors/tb"))
-        .arg("-I")
-        .arg(root().join("rtl"))
-        .arg("-o")
-        .arg(&vvp)
-        .arg(root().join("vectors/tb/tb_ramp.v"))
-        .arg(root().join("rtl/tmc429_ramp.v"))
-        .arg(root().join("rtl/tmc429_accel.v"))
-        .arg(root().join("rtl/tmc429_pram.v"))
-        .arg(root().join("rtl/tmc429_wram.v"))
-        .output()
-        .expect("iverilog (scripts/setup installs it)");
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+/// The reference search's ramp vectors replay clean on tmc429_ramp with tmc429_accel serving
+/// it; a flipped expected `stop` bit in a copy is reported at its line and column.
+#[test]
+fn ramp_pins_replay_and_report_a_planted_fault() {
+    let dir = tmpdir("ramppins");
+    let (stem, hex, per) = ramp_pins(&dir);
+    let lines: Vec<&str> = hex.lines().collect();
+    let vvp = build_unit_tb(&dir, "tb_ramp", &["tmc429_ramp.v", "tmc429_accel.v", "tmc429_pram.v", "tmc429_wram.v"]);
     let out = replay(&vvp, &stem, None);
-    assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
+    assert_eq!(out.last().unwrap(), &format!("{} passed, 0 failed", lines.len()), "{out:?}");
 
-    // flip `stop` (word bit 17: bit 1 of digit 58) of the line s + 1 of motor 1's lines, and the
-    // same bit of the check digit (62)
-    let k = per + s + 1;
-    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
-    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
-    let b: Vec<char> = bad[k].chars().collect();
-    let mut c = b.clone();
-    c[58] = flip(b[58] as u8, 2);
-    c[62] = flip(b[62] as u8, 2);
-    bad[k] = c.into_iter().collect();
-    let was = field(lines[k], 17, 1);
-    let planted = dir.join("planted.hex");
-    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    // flip `stop` (word bit 17: bit 1 of digit 58) of the line after motor 0's switch stop in
+    // motor 1's lines, and the same bit of the check digit (62)
+    let k = per + after_switch_stop(&lines[..per]) + 1;
+    let was = word_field(lines[k], 17, 1);
+    let planted = plant(&dir, &lines, k, &[(58, 2), (62, 2)]);
     let out = replay(&vvp, &stem, Some(&planted));
     assert_eq!(
         out[..2],
-        [format!("MISMATCH cycle {k} column stop: expected {} got {was}", was ^ 1), format!("{} passed, 1 failed", cycles - 1)],
+        [format!("MISMATCH cycle {k} column stop: expected {} got {was}", was ^ 1), format!("{} passed, 1 failed", lines.len() - 1)],
         "{out:?}"
     );
     std::fs::remove_dir_all(&dir).ok();
@@ -256,8 +268,7 @@ fn chain_pins_replay_and_report_a_planted_fault() {
     // word bits: A 203..200 | inputs 199..95 (rst 199, spi_mode 197, cw 139, dgw 138)
     // | outputs 94..7 (cover_busy 83, dgw_busy 82, cs 33, sdo 31, state 23..21) | _check 6..0
     // (3 zero pad bits and the check digit)
-    let bit = |l: &str, b: usize| (l.as_bytes()[l.len() - 1 - b / 4] as char).to_digit(16).unwrap() as u64 >> (b % 4) & 1;
-    let field = |l: &str, lo: usize, w: usize| (lo..lo + w).rev().fold(0u64, |a, b| a << 1 | bit(l, b));
+    let field = word_field;
     assert_eq!((field(lines[0], 199, 1), field(lines[1], 199, 1)), (1, 0));
     // the abort: a busy chain sees spi_mode 0, goes to IDLE with CS inactive; the next line
     // presents cw and dgw waiting again (the register file took them back, C89)
@@ -267,20 +278,7 @@ fn chain_pins_replay_and_report_a_planted_fault() {
     assert_eq!((field(lines[a], 21, 3), field(lines[a], 33, 1), field(lines[a], 83, 1), field(lines[a], 82, 1)), (0, 0, 0, 0));
     assert_eq!((field(lines[a + 1], 139, 1), field(lines[a + 1], 138, 1)), (1, 1));
 
-    let vvp = dir.join("tb_chain.vvp");
-    let o = Command::new("iverilog")
-        .args(["-g2005", "-P", "tb_chain.CHIP=1", "-I"])
-        .arg(root().join("vectors/tb"))
-        .arg("-I")
-        .arg(root().join("rtl"))
-        .arg("-o")
-        .arg(&vvp)
-        .arg(root().join("vectors/tb/tb_chain.v"))
-        .arg(root().join("rtl/tmc429_chain.v"))
-        .arg(root().join("rtl/tmc429_microstep.v"))
-        .output()
-        .expect("iverilog (scripts/setup installs it)");
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let vvp = build_unit_tb(&dir, "tb_chain", &["tmc429_chain.v", "tmc429_microstep.v"]);
     let out = replay(&vvp, &stem, None);
     assert_eq!(out.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{out:?}");
 
@@ -288,15 +286,8 @@ fn chain_pins_replay_and_report_a_planted_fault() {
     // SDO_S high while the chip select is active (a datagram bit; SDO_S idles high, C81), and
     // the same bit of the check digit (the last)
     let k = lines.iter().position(|l| field(l, 31, 1) == 1 && field(l, 33, 1) == 1).expect("an SDO_S high bit");
-    let flip = |d: u8, x: u32| char::from_digit(char::from(d).to_digit(16).unwrap() ^ x, 16).unwrap().to_ascii_uppercase();
-    let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
-    let mut c: Vec<char> = bad[k].chars().collect();
-    let n = c.len();
-    c[n - 1 - 7] = flip(c[n - 1 - 7] as u8, 8);
-    c[n - 1] = flip(c[n - 1] as u8, 8);
-    bad[k] = c.into_iter().collect();
-    let planted = dir.join("planted.hex");
-    std::fs::write(&planted, bad.join("\n") + "\n").unwrap();
+    let n = lines[k].len();
+    let planted = plant(&dir, &lines, k, &[(n - 1 - 7, 8), (n - 1, 8)]);
     let out = replay(&vvp, &stem, Some(&planted));
     assert_eq!(
         out[..2],

@@ -179,11 +179,10 @@ fn example(name: &str) -> String {
 
 /// A TOML scenario file (docs/scenarios.md) as a vector scenario: the RAMP_MODE move of
 /// examples/scenarios/ramp-move.toml ends at its x_target 1000 with velocity 0, every step
-/// counted (TMC429 §8.1.11); the µC's frames are the file's writes by name, in file order, and
-/// the two reads of its expectation at 55 ms (the frame starts on the edge after 1 760 000).
+/// counted (TMC429 §8.1.11).
 #[test]
-fn toml_scenario_vectors() {
-    let dir = tmpdir("toml");
+fn toml_scenario_ramp_vectors() {
+    let dir = tmpdir("toml-ramp");
     let f = example("ramp-move.toml");
     let printed = export(&dir, &["--unit", "ramp", "--scenario", &f, "--format", "csv"]);
     assert_eq!(printed, format!("{}\n", dir.join("ramp-ramp-move-tmc429.csv").display()));
@@ -198,7 +197,15 @@ fn toml_scenario_vectors() {
     // C41); 60 ms run
     let c: Vec<u64> = m0.iter().rev().take(2).map(|r| r[0].parse().unwrap()).collect();
     assert_eq!((c[0], c[0] - c[1]), (1_919_985, 1024));
+    std::fs::remove_dir_all(&dir).ok();
+}
 
+/// The µC's frames of the TOML scenario: the file's writes by name, in file order, and the two
+/// reads of its expectation at 55 ms (the frame starts on the edge after 1 760 000).
+#[test]
+fn toml_scenario_spi_vectors() {
+    let dir = tmpdir("toml-spi");
+    let f = example("ramp-move.toml");
     export(&dir, &["--unit", "spi", "--format", "csv", "--scenario", &f]);
     let rows = csv(&dir.join("spi-ramp-move-tmc429.csv"));
     let got: Vec<[&str; 5]> = rows.iter().map(|r| [r[0].as_str(), r[3].as_str(), r[4].as_str(), r[5].as_str(), r[6].as_str()]).collect();
@@ -219,8 +226,15 @@ fn toml_scenario_vectors() {
         ]
     );
     assert_eq!(rows[0][1], "265");
+    std::fs::remove_dir_all(&dir).ok();
+}
 
-    export(&dir, &["--unit", "chip", "--scenario", &f]);
+/// The chip's pins of the TOML scenario: its length, clock and replay state in the meta file,
+/// one hex line per CLK edge.
+#[test]
+fn toml_scenario_chip_vectors() {
+    let dir = tmpdir("toml-chip");
+    export(&dir, &["--unit", "chip", "--scenario", &example("ramp-move.toml")]);
     let stem = dir.join("chip-ramp-move-tmc429");
     for (k, v) in [
         ("cycles", "1920001"),
@@ -234,8 +248,16 @@ fn toml_scenario_vectors() {
         assert_eq!(meta(&stem, k), v, "{k}");
     }
     assert_eq!(std::fs::read_to_string(stem.with_extension("hex")).unwrap().lines().count(), 1_920_001);
+    std::fs::remove_dir_all(&dir).ok();
+}
 
-    // the file names its chip, fclk and sck_half: an option that contradicts them is an error
+/// The scenario file names its chip, fclk and sck_half: an option that contradicts them is an
+/// error, one that agrees is accepted; a scenario error names file and line, exits 2 and leaves
+/// no files; a unit without a scenario form (lut) is a usage error.
+#[test]
+fn toml_scenario_option_and_file_errors() {
+    let dir = tmpdir("toml-err");
+    let f = example("ramp-move.toml");
     for (opt, val, msg) in [
         ("--chip", "tmc428", "--chip tmc428: the scenario file"),
         ("--fclk", "16MHz", "--fclk 16000000: the scenario file"),
@@ -245,9 +267,7 @@ fn toml_scenario_vectors() {
         assert_eq!(o.status.code(), Some(2), "{opt}");
         assert!(String::from_utf8_lossy(&o.stderr).contains(msg), "{}", String::from_utf8_lossy(&o.stderr));
     }
-    // agreeing options are accepted
     export(&dir, &["--unit", "spi", "--format", "csv", "--scenario", &f, "--chip", "tmc429", "--fclk", "32MHz", "--sck-half", "4"]);
-    // a scenario error: file, line, exit 2, no files
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "duration = \"1 ms\"\n[[write]]\nmotor = 0\nv_maks = 1\n").unwrap();
     let o = tmc429().args(["vectors", "--unit", "chip", "--scenario"]).arg(&bad).arg("--out").arg(dir.join("bad")).output().unwrap();
@@ -259,14 +279,10 @@ fn toml_scenario_vectors() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// `tmc429 run FILE --vectors DIR`: the chip pins and the spi, ramp and chain CSV, listed; the
-/// same files as `tmc429 vectors --scenario FILE` per unit, and the golden model's whatever the
-/// engine. A scenario that only writes and reads registers replays on the RTL under Icarus
-/// Verilog with 0 failed (the RTL has the SPI slave and the register file).
-#[test]
-fn run_writes_the_vectors_of_a_scenario() {
-    let dir = tmpdir("run");
+/// The register-only scenario of the `tmc429 run --vectors` tests, written into `dir`.
+fn regs_scenario(dir: &std::path::Path) -> std::path::PathBuf {
     let sc = dir.join("regs.toml");
+    std::fs::create_dir_all(dir).unwrap();
     std::fs::write(
         &sc,
         "name = \"regs\"\n\
@@ -289,25 +305,43 @@ fn run_writes_the_vectors_of_a_scenario() {
          register = { pos_comp = 1234, type_version = 0x429101 }\n",
     )
     .unwrap();
+    sc
+}
+
+/// The six files `tmc429 run --vectors` writes for the regs scenario, in the order it lists them.
+const RUN_FILES: [&str; 6] = [
+    "chip-regs-tmc429.hex",
+    "chip-regs-tmc429.cols",
+    "chip-regs-tmc429.meta",
+    "spi-regs-tmc429.csv",
+    "ramp-regs-tmc429.csv",
+    "chain-regs-tmc429.csv",
+];
+
+/// `tmc429 run FILE --vectors DIR` (the golden model's vectors whatever the engine) into `out`.
+fn run_vectors(sc: &std::path::Path, engine: &str, out: &std::path::Path) -> String {
+    let o = tmc429().arg("run").arg(sc).args(["--engine", engine, "--vectors"]).arg(out).output().unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert_eq!(o.status.code(), Some(0), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
+    stdout
+}
+
+/// `tmc429 run FILE --vectors DIR`: the chip pins and the spi, ramp and chain CSV, listed, no
+/// other file; the SPI frames are the driver table's, the LUT's, the writes' and the
+/// expectation's reads; the same files as `tmc429 vectors --scenario FILE` per unit.
+#[test]
+fn run_writes_the_vectors_of_a_scenario() {
+    let dir = tmpdir("run");
+    let sc = regs_scenario(&dir);
     let model = dir.join("model");
-    let o = tmc429().arg("run").arg(&sc).arg("--vectors").arg(&model).output().unwrap();
-    let out = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(o.status.code(), Some(0), "{out}{}", String::from_utf8_lossy(&o.stderr));
-    let names = [
-        "chip-regs-tmc429.hex",
-        "chip-regs-tmc429.cols",
-        "chip-regs-tmc429.meta",
-        "spi-regs-tmc429.csv",
-        "ramp-regs-tmc429.csv",
-        "chain-regs-tmc429.csv",
-    ];
+    let out = run_vectors(&sc, "model", &model);
     let listed: Vec<&str> = out.lines().filter_map(|l| l.strip_prefix("vectors: ")).collect();
-    let want: Vec<String> = names.iter().map(|n| model.join(n).display().to_string()).collect();
+    let want: Vec<String> = RUN_FILES.iter().map(|n| model.join(n).display().to_string()).collect();
     assert_eq!(listed, want);
     let mut files: Vec<String> =
         std::fs::read_dir(&model).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     files.sort();
-    let mut sorted = names.to_vec();
+    let mut sorted = RUN_FILES.to_vec();
     sorted.sort();
     assert_eq!(files, sorted, "exactly these, no temporary files");
     // the 18 words of Table 11-2 and LSMD, the 32 words of the sine table, the five register
@@ -331,23 +365,38 @@ fn run_writes_the_vectors_of_a_scenario() {
             }
         }
     }
-    // co-simulated: the vectors are still the golden model's
-    let cosim = dir.join("cosim");
-    let o = tmc429().arg("run").arg(&sc).args(["--engine", "cosim", "--vectors"]).arg(&cosim).output().unwrap();
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stdout));
-    for n in names {
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `tmc429 run --engine cosim --vectors DIR` writes the golden model's vectors, byte for byte
+/// those of `--engine model`; the chip vectors of the register-only scenario replay on the RTL
+/// under Icarus Verilog with 0 failed (the RTL has the SPI slave and the register file).
+#[test]
+fn run_vectors_of_cosim_are_the_models_and_replay_on_the_rtl() {
+    let dir = tmpdir("run-cosim");
+    let sc = regs_scenario(&dir);
+    let (model, cosim) = (dir.join("model"), dir.join("cosim"));
+    run_vectors(&sc, "model", &model);
+    run_vectors(&sc, "cosim", &cosim);
+    for n in RUN_FILES {
         assert_eq!(std::fs::read(model.join(n)).unwrap(), std::fs::read(cosim.join(n)).unwrap(), "{n}");
     }
-
-    // the chip vectors replay on the RTL: every pin it drives, every cycle
+    // every pin the chip drives, every cycle
     let stem = model.join("chip-regs-tmc429");
     let cycles: u64 = meta(&stem, "cycles").parse().unwrap();
     assert_eq!(cycles, 32_001);
     let vvp = build_chip_tb(&dir, None);
     let replayed = replay(&vvp, &stem, None);
     assert_eq!(replayed.last().unwrap(), &format!("{cycles} passed, 0 failed"), "{replayed:?}");
+    std::fs::remove_dir_all(&dir).ok();
+}
 
-    // an output directory that cannot be made: exit 2 before running
+/// `tmc429 run --vectors DIR` with a DIR that cannot be made: exit 2 before running, the path
+/// and the reason on stderr, nothing on stdout.
+#[test]
+fn run_vectors_into_an_uncreatable_directory_exits_2() {
+    let dir = tmpdir("run-bad");
+    let sc = regs_scenario(&dir);
     let o = tmc429().arg("run").arg(&sc).args(["--vectors", "/proc/nonexistent/v"]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
     assert!(o.stdout.is_empty());

@@ -210,6 +210,8 @@ fn ramp_move_reaches_target_and_probes_agree() {
     }
 }
 
+/// Null pointers, lengths 0, 5 and SIZE_MAX and out-of-range arguments return their codes,
+/// and no failed call advances the chip's time.
 #[test]
 fn misuse_returns_errors() {
     unsafe {
@@ -236,6 +238,15 @@ fn misuse_returns_errors() {
         let mut ev = [tmc429_event_t::default(); 1];
         assert_eq!(tmc429_events_drain(h, null_mut(), 1), TMC429_ERR_NULL);
         assert_eq!(tmc429_events_drain(h, ev.as_mut_ptr(), 0), TMC429_ERR_LENGTH);
+        assert_eq!(tmc429_destroy(h), TMC429_OK);
+    }
+}
+
+/// `tmc429_event_format`: the line and its NUL must fit, null pointers, an unknown kind and a
+/// chain event longer than 64 bits return their codes; a chain event's line.
+#[test]
+fn event_format_checks_its_arguments() {
+    unsafe {
         let mut s = [0 as std::ffi::c_char; 64];
         let e = tmc429_event_t { kind: TMC429_EVENT_INT, cycle: 7, level: 1, ..Default::default() };
         assert_eq!(tmc429_event_format(&e, s.as_mut_ptr(), 8), 7, "\"int 7 1\" and NUL fit in 8");
@@ -251,9 +262,19 @@ fn misuse_returns_errors() {
         let n = tmc429_event_format(&chain, s.as_mut_ptr(), 64);
         let line: String = s[..n as usize].iter().map(|&c| c as u8 as char).collect();
         assert_eq!(line, "chain 4567 36 87F87F87F");
+    }
+}
 
-        // A destroyed handle, a never-created one and 0.
+/// A destroyed handle, a never-created one and 0 return TMC429_ERR_HANDLE from every call
+/// that takes one; a new chip never gets the old number.
+#[test]
+fn stale_and_invalid_handles_are_refused() {
+    unsafe {
+        let h = create(TMC429_CHIP_TMC429, 0);
         assert_eq!(tmc429_destroy(h), TMC429_OK);
+        let tx = [0u8; 5];
+        let mut rx = [0u8; 5];
+        let mut ev = [tmc429_event_t::default(); 1];
         for bad in [h, 0, u64::MAX] {
             let mut u = 0u8;
             let mut c = 0u64;
@@ -268,7 +289,6 @@ fn misuse_returns_errors() {
             assert_eq!(tmc429_set_sck_half(bad, 4), TMC429_ERR_HANDLE);
             assert_eq!(tmc429_events_drain(bad, ev.as_mut_ptr(), 1), TMC429_ERR_HANDLE);
         }
-        // A new chip never gets the old number.
         let h2 = create(TMC429_CHIP_TMC429, 0);
         assert_ne!(h2, h);
         tmc429_destroy(h2);

@@ -29,23 +29,24 @@ fn inputs(chip: Chip, n: usize) -> Vec<Inputs> {
         .collect()
 }
 
-fn bench(c: &mut Criterion) {
-    let chip = Chip::Tmc429;
-    let inp = inputs(chip, CYCLES);
-    let mut g = c.benchmark_group("cosim");
-    g.throughput(Throughput::Elements(CYCLES as u64));
-    g.sample_size(10);
+type Group<'a> = criterion::BenchmarkGroup<'a, criterion::measurement::WallTime>;
 
+/// The Verilated RTL alone, stepped through the inputs.
+fn rtl_alone(g: &mut Group, chip: Chip, inp: &[Inputs]) {
     g.bench_function("rtl_alone_tmc429", |b| {
         b.iter(|| {
             let mut rtl = Rtl::new(Variant::Chip(chip));
-            for i in &inp {
+            for i in inp {
                 black_box(rtl.tick(i));
             }
             black_box(rtl.probes());
         })
     });
+}
 
+/// The lock-step pair as `tmc429 cosim` runs it: the model in this thread, the RTL and the
+/// comparison in a second one (`run_pair`).
+fn lockstep_pair(g: &mut Group, chip: Chip, inp: &[Inputs]) {
     g.bench_function("lockstep_pair_tmc429", |b| {
         let mask = Compare::all();
         b.iter(|| {
@@ -64,14 +65,17 @@ fn bench(c: &mut Criterion) {
             assert_eq!(first, None);
         })
     });
+}
 
+/// The pair in one thread: model, RTL and comparison one after the other in every cycle.
+fn lockstep_pair_1thread(g: &mut Group, chip: Chip, inp: &[Inputs]) {
     g.bench_function("lockstep_pair_1thread_tmc429", |b| {
         let mask = Compare::all();
         b.iter(|| {
             let mut model = Tmc429::new(chip);
             let mut rtl = Rtl::new(Variant::Chip(chip));
             let mut bad = 0u32;
-            for i in &inp {
+            for i in inp {
                 let mo = model.tick(i);
                 let ro = rtl.tick(i);
                 if !agree(mask, &mo, &model.probes(), &ro, &rtl.probes()) {
@@ -81,7 +85,18 @@ fn bench(c: &mut Criterion) {
             assert_eq!(bad, 0);
         })
     });
+}
 
+fn bench(c: &mut Criterion) {
+    let chip = Chip::Tmc429;
+    let inp = inputs(chip, CYCLES);
+    let mut g = c.benchmark_group("cosim");
+    g.throughput(Throughput::Elements(CYCLES as u64));
+    g.sample_size(10);
+    rtl_alone(&mut g, chip, &inp);
+    lockstep_pair(&mut g, chip, &inp);
+    lockstep_pair_1thread(&mut g, chip, &inp);
+    // the whole `tmc429 cosim` loop: stimulus, pin driver, both sides
     g.bench_function("cosim_run_tmc429", |b| {
         b.iter(|| {
             let out = run(&Config::new(chip, 1, CYCLES as u64)).unwrap();

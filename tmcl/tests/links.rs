@@ -150,13 +150,20 @@ fn end_switch_stops_motor_via_chip() {
     assert!(direct(&mut m, op::GAP, 1, 2, 0).1 > 900);
 }
 
-#[test]
-fn eeprom_persistence_and_corruption() {
-    let dir = std::env::temp_dir().join(format!("tmcl-eeprom-{}", std::process::id()));
+/// A TMCM-3110 module whose EEPROM image is the file `module.eep` in a fresh directory of the
+/// test `tag`: the file's path and the module's constructor.
+fn eeprom_module(tag: &str) -> (std::path::PathBuf, impl Fn() -> Result<Module<ModelChip>, (ModelChip, tmcl::eeprom::EepromError)>) {
+    let dir = std::env::temp_dir().join(format!("tmcl-eeprom-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("module.eep");
-    let _ = std::fs::remove_file(&path);
-    let new = || Module::with_eeprom(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000), ModuleType::Tmcm3110, path.clone());
+    let p = path.clone();
+    (path, move || Module::with_eeprom(ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000), ModuleType::Tmcm3110, p.clone()))
+}
+
+#[test]
+fn eeprom_persistence() {
+    let (path, new) = eeprom_module("keep");
     {
         let mut m = new().ok().expect("missing file = factory defaults");
         assert_eq!(direct(&mut m, op::GAP, 4, 0, 0), (100, 1000));
@@ -174,21 +181,25 @@ fn eeprom_persistence_and_corruption() {
         direct(&mut m, op::SAP, 4, 0, 10);
         assert_eq!(direct(&mut m, op::RSAP, 4, 0, 0), (100, 1500));
     }
-    {
-        let mut m = new().ok().unwrap();
-        assert_eq!(direct(&mut m, op::GAP, 4, 0, 0), (100, 1500));
-        assert_eq!(direct(&mut m, op::GAP, 5, 1, 0), (100, 1000));
-        assert_eq!(direct(&mut m, op::GGP, 7, 2, 0), (100, 99));
-        assert_eq!(m.program(), &[Instruction::new(op::SGP, 8, 2, 5), Instruction::new(op::STOP, 0, 0, 0)]);
-        // Read memory (command 134): type 0 opcode/type/motor, type 1 value.
-        assert_eq!(direct(&mut m, op::READ_MEMORY, 0, 0, 0), (100, (9 << 24) | (8 << 16) | (2 << 8)));
-        assert_eq!(direct(&mut m, op::READ_MEMORY, 1, 0, 0), (100, 5));
-        // Restore factory defaults (137, value 1234): no reply.
-        assert!(matches!(m.handle_instruction(&Instruction::new(op::FACTORY_DEFAULTS, 0, 0, 1234)), Response::None));
-        assert_eq!(direct(&mut m, op::GAP, 4, 0, 0), (100, 1000));
-    }
-    let good = std::fs::read(&path).unwrap();
-    assert_eq!(good, tmcl::eeprom::Image::default().encode());
+    let mut m = new().ok().unwrap();
+    assert_eq!(direct(&mut m, op::GAP, 4, 0, 0), (100, 1500));
+    assert_eq!(direct(&mut m, op::GAP, 5, 1, 0), (100, 1000));
+    assert_eq!(direct(&mut m, op::GGP, 7, 2, 0), (100, 99));
+    assert_eq!(m.program(), &[Instruction::new(op::SGP, 8, 2, 5), Instruction::new(op::STOP, 0, 0, 0)]);
+    // Read memory (command 134): type 0 opcode/type/motor, type 1 value.
+    assert_eq!(direct(&mut m, op::READ_MEMORY, 0, 0, 0), (100, (9 << 24) | (8 << 16) | (2 << 8)));
+    assert_eq!(direct(&mut m, op::READ_MEMORY, 1, 0, 0), (100, 5));
+    // Restore factory defaults (137, value 1234): no reply.
+    assert!(matches!(m.handle_instruction(&Instruction::new(op::FACTORY_DEFAULTS, 0, 0, 1234)), Response::None));
+    assert_eq!(direct(&mut m, op::GAP, 4, 0, 0), (100, 1000));
+    assert_eq!(std::fs::read(&path).unwrap(), tmcl::eeprom::Image::default().encode());
+    let _ = std::fs::remove_dir_all(path.parent().unwrap());
+}
+
+#[test]
+fn eeprom_corruption() {
+    let (path, new) = eeprom_module("corrupt");
+    let good = tmcl::eeprom::Image::default().encode();
     // Corrupt: one flipped byte, a truncated file: rejected as a whole.
     let mut bad = good.clone();
     bad[20] ^= 1;
@@ -200,8 +211,7 @@ fn eeprom_persistence_and_corruption() {
     assert!(e.contains("payload length field"), "{e}");
     // A stored program must pass the download check; an image of the other module type is
     // not loaded either.
-    let mut img = tmcl::eeprom::Image::default();
-    img.program = vec![Instruction::new(op::ROR, 0, 0, 5000)];
+    let img = tmcl::eeprom::Image { program: vec![Instruction::new(op::ROR, 0, 0, 5000)], ..Default::default() };
     img.save(&path).unwrap();
     let e = new().err().expect("program refused").1.to_string();
     assert_eq!(e, "corrupt EEPROM image: program instruction 0: velocity 5000 is outside −2047..2047 (TMC429 units; --module tmcm-1311 takes pps) (status 4)");
@@ -210,7 +220,7 @@ fn eeprom_persistence_and_corruption() {
     assert_eq!(e, "corrupt EEPROM image: the image is of a TMCM-1311, this module is a TMCM-3110");
     let chip = ModelChip::new(tmc429_model::Chip::Tmc429, 16_000_000);
     assert!(Module::with_eeprom(chip, ModuleType::Tmcm1311, path.clone()).is_ok());
-    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(path.parent().unwrap());
 }
 
 /// A server of a fresh module on a free TCP port of 127.0.0.1 (no pty), real time, 50 ms frame timeout.

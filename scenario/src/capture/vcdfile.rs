@@ -32,62 +32,90 @@ pub fn read(path: &Path) -> Result<Capture, CaptureError> {
     let file = path.display().to_string();
     let f = open_complete(path, &file)?;
     let mut p = vcd::Parser::new(BufReader::with_capacity(1 << 20, f));
-    let mut scope: Vec<String> = Vec::new();
-    // (scope path, reference, id) of every one-bit variable
-    let mut vars: Vec<(String, String, vcd::IdCode)> = Vec::new();
-    let mut timescale: Option<(u32, vcd::TimescaleUnit)> = None;
-    let mut header = true;
-    let mut time = 0u64;
-    let mut changes: Vec<Vec<(u64, bool)>> = Vec::new();
-    let mut by_id: std::collections::HashMap<vcd::IdCode, Vec<usize>> = Default::default();
-    let err = |line: u64, m: String| CaptureError(format!("{file}:{line}: {m}"));
+    let mut r = Reader::default();
     loop {
         let line = p.line();
         let cmd = match p.next() {
             None => break,
             Some(Ok(c)) => c,
-            Some(Err(e)) => return Err(err(line, format!("not a valid VCD: {e}"))),
+            Some(Err(e)) => return Err(CaptureError(format!("{file}:{line}: not a valid VCD: {e}"))),
         };
+        r.command(cmd).map_err(|m| CaptureError(format!("{file}:{line}: {m}")))?;
+    }
+    if r.header {
+        return Err(CaptureError(format!("{file}: no $enddefinitions: the VCD is truncated or not a VCD")));
+    }
+    let (k, unit) = r.timescale.ok_or_else(|| CaptureError(format!("{file}: no $timescale: the sample rate is unknown")))?;
+    let per_s = unit.divisor();
+    if per_s % k as u64 != 0 {
+        return Err(CaptureError(format!("{file}: timescale {k} {unit}: unsupported")));
+    }
+    let names = channel_names(&r.vars);
+    Ok(Capture::from_changes(per_s / k as u64, r.time + 1, names, r.changes))
+}
+
+/// What [`read`] has taken from the VCD's commands so far.
+struct Reader {
+    scope: Vec<String>,
+    /// (scope path, reference, id) of every one-bit variable
+    vars: Vec<(String, String, vcd::IdCode)>,
+    timescale: Option<(u32, vcd::TimescaleUnit)>,
+    /// before `$enddefinitions`
+    header: bool,
+    time: u64,
+    /// per variable, its value changes (time, level)
+    changes: Vec<Vec<(u64, bool)>>,
+    by_id: std::collections::HashMap<vcd::IdCode, Vec<usize>>,
+}
+
+impl Default for Reader {
+    fn default() -> Self {
+        Reader {
+            scope: Vec::new(),
+            vars: Vec::new(),
+            timescale: None,
+            header: true,
+            time: 0,
+            changes: Vec::new(),
+            by_id: Default::default(),
+        }
+    }
+}
+
+impl Reader {
+    /// Takes one command; an error is the message for the command's line.
+    fn command(&mut self, cmd: Command) -> Result<(), String> {
         match cmd {
-            Command::Timescale(k, u) => timescale = Some((k, u)),
-            Command::ScopeDef(_, name) => scope.push(name),
+            Command::Timescale(k, u) => self.timescale = Some((k, u)),
+            Command::ScopeDef(_, name) => self.scope.push(name),
             Command::Upscope => {
-                scope.pop();
+                self.scope.pop();
             }
-            Command::VarDef(_, 1, id, reference, _) if header => vars.push((scope.join("."), reference, id)),
+            Command::VarDef(_, 1, id, reference, _) if self.header => self.vars.push((self.scope.join("."), reference, id)),
             Command::Enddefinitions => {
-                header = false;
-                changes = vec![Vec::new(); vars.len()];
-                for (k, v) in vars.iter().enumerate() {
-                    by_id.entry(v.2).or_default().push(k);
+                self.header = false;
+                self.changes = vec![Vec::new(); self.vars.len()];
+                for (k, v) in self.vars.iter().enumerate() {
+                    self.by_id.entry(v.2).or_default().push(k);
                 }
             }
             Command::Timestamp(t) => {
-                if t < time {
-                    return Err(err(line, format!("time #{t} goes back (after #{time})")));
+                if t < self.time {
+                    return Err(format!("time #{t} goes back (after #{})", self.time));
                 }
-                time = t;
+                self.time = t;
             }
-            Command::ChangeScalar(id, v) if !header => {
-                if let Some(ks) = by_id.get(&id) {
+            Command::ChangeScalar(id, v) if !self.header => {
+                if let Some(ks) = self.by_id.get(&id) {
                     for &k in ks {
-                        changes[k].push((time, v == Value::V1));
+                        self.changes[k].push((self.time, v == Value::V1));
                     }
                 }
             }
             _ => {}
         }
+        Ok(())
     }
-    if header {
-        return Err(CaptureError(format!("{file}: no $enddefinitions: the VCD is truncated or not a VCD")));
-    }
-    let (k, unit) = timescale.ok_or_else(|| CaptureError(format!("{file}: no $timescale: the sample rate is unknown")))?;
-    let per_s = unit.divisor();
-    if per_s % k as u64 != 0 {
-        return Err(CaptureError(format!("{file}: timescale {k} {unit}: unsupported")));
-    }
-    let names = channel_names(&vars);
-    Ok(Capture::from_changes(per_s / k as u64, time + 1, names, changes))
 }
 
 /// Opens a VCD file that is not empty and ends with a complete line (a file cut short

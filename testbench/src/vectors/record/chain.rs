@@ -94,57 +94,71 @@ impl ChainPins {
         hs: chain::Handshake,
     ) -> Result<(), String> {
         let rd = if i.run && i.spi_mode { chain::ram_read(new, ram_q) } else { None };
-        let take = hs.take;
-        let tri = |a: [u8; 3], w: u32| (a[2] as u64) << (2 * w) | (a[1] as u64) << w | a[0] as u64;
-        let v = [
-            rst as u64,
-            i.run as u64,
-            i.spi_mode as u64,
-            i.step as u64,
-            i.dir as u64,
-            tri(i.ustep, 8),
-            tri(i.i_scale, 3),
-            nx.ramp_tick as u64,
-            clk2_div_w.is_some() as u64,
-            clk2_div_w.unwrap_or(0) as u64,
-            i.lsmd as u64,
-            i.pol_ph_ab as u64,
-            i.pol_fd_ab as u64,
-            i.pol_dac_ab as u64,
-            nx.cont_update as u64,
-            i.cw as u64,
-            i.dgw as u64,
-            i.readback_clr as u64,
-            i.cover_pos as u64,
-            i.cover_len as u64,
-            i.cover_datagram as u64,
-            i.sdi_s as u64,
-            ram_q as u64,
-            rd.is_some() as u64,
-            rd.map_or(0, |(c, _)| c as u64),
-            take as u64,
-            hs.ret_cw as u64,
-            hs.ret_dgw as u64,
-            new.cover_busy as u64,
-            new.dgw_busy as u64,
-            new.readback,
-            new.cs as u64,
-            new.sck as u64,
-            new.sdo as u64,
-            new.motor as u64,
-            // the next CS/SCK/motor unless a datagram starts: at a start (from IDLE or the end
-            // of CSOFF) they would hold
-            if take { new.cs } else { d.cs } as u64,
-            if take { new.sck } else { d.sck } as u64,
-            d.sdo as u64,
-            if take { new.motor } else { d.motor } as u64,
-            new.state as u64,
-            new.cell as u64,
-            new.bits as u64,
-            new.req as u64,
-        ];
+        let mut v = input_columns(rst, i, nx, ram_q, clk2_div_w);
+        v.extend(output_columns(rd, new, d, hs));
         self.w.line(&v)
     }
+}
+
+/// The input columns of a line: the inputs of the edge (`i`), the ones the unit reads from
+/// the next state (`nx`), the RAM word and the µC's clk2_div write.
+fn input_columns(rst: bool, i: &chain::ChainInputs, nx: &chain::ChainInputs, ram_q: u8, clk2_div_w: Option<u8>) -> Vec<u64> {
+    let tri = |a: [u8; 3], w: u32| (a[2] as u64) << (2 * w) | (a[1] as u64) << w | a[0] as u64;
+    vec![
+        rst as u64,
+        i.run as u64,
+        i.spi_mode as u64,
+        i.step as u64,
+        i.dir as u64,
+        tri(i.ustep, 8),
+        tri(i.i_scale, 3),
+        nx.ramp_tick as u64,
+        clk2_div_w.is_some() as u64,
+        clk2_div_w.unwrap_or(0) as u64,
+        i.lsmd as u64,
+        i.pol_ph_ab as u64,
+        i.pol_fd_ab as u64,
+        i.pol_dac_ab as u64,
+        nx.cont_update as u64,
+        i.cw as u64,
+        i.dgw as u64,
+        i.readback_clr as u64,
+        i.cover_pos as u64,
+        i.cover_len as u64,
+        i.cover_datagram as u64,
+        i.sdi_s as u64,
+        ram_q as u64,
+    ]
+}
+
+/// The output columns of a line: the RAM read, the handshake, the state after the edge (`new`)
+/// and the next-state outputs (`d`: the state one more edge on).
+fn output_columns(rd: Option<(u8, bool)>, new: &chain::Chain, d: &chain::Chain, hs: chain::Handshake) -> Vec<u64> {
+    let take = hs.take;
+    vec![
+        rd.is_some() as u64,
+        rd.map_or(0, |(c, _)| c as u64),
+        take as u64,
+        hs.ret_cw as u64,
+        hs.ret_dgw as u64,
+        new.cover_busy as u64,
+        new.dgw_busy as u64,
+        new.readback,
+        new.cs as u64,
+        new.sck as u64,
+        new.sdo as u64,
+        new.motor as u64,
+        // the next CS/SCK/motor unless a datagram starts: at a start (from IDLE or the end
+        // of CSOFF) they would hold
+        if take { new.cs } else { d.cs } as u64,
+        if take { new.sck } else { d.sck } as u64,
+        d.sdo as u64,
+        if take { new.motor } else { d.motor } as u64,
+        new.state as u64,
+        new.cell as u64,
+        new.bits as u64,
+        new.req as u64,
+    ]
 }
 
 impl Recorder for ChainPins {
