@@ -156,7 +156,7 @@ module tmc429_ramp #(
     // and 1, its sum unused), so the step, the carry out, is one carry chain from
     // flip-flops; while stop_hard holds the sum is acc (no step). Not v_mc + v_mc in bit 0:
     // a carry cell with one net on both operands can keep nextpnr-ice40 0.4's router from
-    // ever finishing (docs/rtl.md, "Synthesis: iCE40 UP5K"; scripts/carry-check)
+    // ever finishing (docs/rtl.md, "Checks"; scripts/carry-check)
     /* verilator lint_off UNUSEDSIGNAL */
     wire [12:0] p_t   = {1'b0, acc, v_mc} + {1'b0, v_mx, 1'b1};
     /* verilator lint_on UNUSEDSIGNAL */
