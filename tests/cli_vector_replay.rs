@@ -1,25 +1,8 @@
 //! `tmc429 vectors` replayed on the RTL under Icarus Verilog: clean, with a planted bug (the
 //! first mismatch at the right cycle and column), and corrupt vector files.
 
-use std::process::Command;
-
 mod vectors_common;
 use vectors_common::*;
-
-/// Icarus Verilog build of a unit's replay testbench `vectors/tb/TB.v` with the RTL files it
-/// wires (names under rtl/), for the TMC429 (CHIP = 1).
-fn build_unit_tb(dir: &std::path::Path, tb: &str, rtl: &[&str]) -> std::path::PathBuf {
-    let vvp = dir.join(format!("{tb}.vvp"));
-    let mut cmd = Command::new("iverilog");
-    cmd.args(["-g2005", "-P", &format!("{tb}.CHIP=1"), "-I"]).arg(root().join("vectors/tb")).arg("-I").arg(root().join("rtl"));
-    cmd.arg("-o").arg(&vvp).arg(root().join(format!("vectors/tb/{tb}.v")));
-    for f in rtl {
-        cmd.arg(root().join("rtl").join(f));
-    }
-    let o = cmd.output().expect("iverilog (scripts/setup installs it)");
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    vvp
-}
 
 /// Bits `lo .. lo + w` of a vector line's word (hex digits, bit 0 the last digit's lowest).
 fn word_field(l: &str, lo: usize, w: usize) -> u64 {

@@ -47,23 +47,35 @@ pub fn split_csv(l: &str) -> Vec<String> {
 /// Builds tb_chip (CHIP = 1) with Icarus, optionally with a define; returns the vvp file.
 pub fn build_chip_tb(dir: &Path, define: Option<&str>) -> PathBuf {
     let vvp = dir.join(format!("tb_chip{}.vvp", define.map(|d| format!("_{d}")).unwrap_or_default()));
-    let mut c = Command::new("iverilog");
-    c.args(["-g2005", "-P", "tb_chip.CHIP=1", "-I"]).arg(root().join("vectors/tb")).arg("-I").arg(root().join("rtl"));
-    c.arg("-o").arg(&vvp);
-    if let Some(d) = define {
-        c.arg(format!("-D{d}"));
-    }
-    c.arg(root().join("vectors/tb/tb_chip.v"));
     let mut rtl: Vec<PathBuf> = std::fs::read_dir(root().join("rtl"))
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|x| x == "v"))
         .collect();
     rtl.sort();
-    c.args(&rtl);
+    build_tb(&vvp, "tb_chip", define, &rtl)
+}
+
+/// Icarus Verilog build of a unit's replay testbench `vectors/tb/TB.v` with the RTL files it
+/// wires (names under rtl/), for the TMC429 (CHIP = 1): `DIR/TB.vvp`.
+pub fn build_unit_tb(dir: &Path, tb: &str, rtl: &[&str]) -> PathBuf {
+    let rtl: Vec<PathBuf> = rtl.iter().map(|f| root().join("rtl").join(f)).collect();
+    build_tb(&dir.join(format!("{tb}.vvp")), tb, None, &rtl)
+}
+
+/// `iverilog` of `vectors/tb/TB.v` with CHIP = 1, an optional define and the RTL files, into `vvp`.
+fn build_tb(vvp: &Path, tb: &str, define: Option<&str>, rtl: &[PathBuf]) -> PathBuf {
+    let mut c = Command::new("iverilog");
+    c.args(["-g2005", "-P", &format!("{tb}.CHIP=1"), "-I"]).arg(root().join("vectors/tb")).arg("-I").arg(root().join("rtl"));
+    c.arg("-o").arg(vvp);
+    if let Some(d) = define {
+        c.arg(format!("-D{d}"));
+    }
+    c.arg(root().join(format!("vectors/tb/{tb}.v")));
+    c.args(rtl);
     let o = c.output().expect("iverilog (scripts/setup installs it)");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    vvp
+    vvp.to_path_buf()
 }
 
 pub fn replay(vvp: &Path, stem: &Path, hex: Option<&Path>) -> Vec<String> {
