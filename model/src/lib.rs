@@ -31,6 +31,7 @@ pub mod spi_slave;
 pub mod stepdir;
 pub mod sync;
 pub mod text;
+pub mod vroot;
 pub mod vtarget;
 
 pub use chip::{Chip, Package};

@@ -28,7 +28,8 @@ pub const V_MAG_MAX: i32 = (1 << 19) - 1;
 
 pub(crate) const MASK24: u32 = 0xFF_FFFF;
 
-pub use crate::vtarget::{braking_velocity, isqrt, DX_LIMIT};
+pub use crate::vroot::{braking_velocity, isqrt};
+pub use crate::vtarget::DX_LIMIT;
 
 /// Sign-extends a 24-bit value.
 #[inline]

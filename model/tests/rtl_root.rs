@@ -1,10 +1,10 @@
-//! The square-root arithmetic of the RTL's target velocity unit (`rtl/tmc429_vtarget.v`, the
+//! The square-root arithmetic of the RTL's target velocity unit (`rtl/tmc429_vroot.v`, the
 //! running steps of `ROOT_SPEC` 0, docs/rtl.md "The target-velocity pipeline"; the law is C50)
 //! gives the model's `isqrt` for every radicand it is loaded with: 28 bits, two steps from the
 //! load's table, then six cycles of two non-restoring steps on a 16-bit two's-complement
 //! remainder.
 
-use tmc429_model::vtarget::isqrt;
+use tmc429_model::vroot::isqrt;
 
 /// The load's two steps from remainder and root 0 over the four top radicand bits: (restoring
 /// remainder, root), the table `sqrt_ld` of the RTL.

@@ -1,4 +1,4 @@
-//! rtl/tmc429_vtarget.v's two forms of the square root's running steps (its parameter
+//! The two forms of the square root's running steps (rtl/tmc429_vroot.v's parameter
 //! `ROOT_SPEC`: 0 non-restoring steps, 1 restoring steps with three differences side by side,
 //! docs/rtl.md "The target-velocity pipeline") give the same committed target velocities
 //! (C50), with Icarus Verilog: the forms side by side, for three motors and for one (the
@@ -171,7 +171,7 @@ endmodule
 #[test]
 fn both_root_forms_commit_the_same_target_velocities() {
     let lines = stream(1);
-    let text = common::icarus_modules(&["tmc429_vtarget", "tmc429_wram"], BENCH, &lines);
+    let text = common::icarus_modules(&["tmc429_vtarget", "tmc429_vroot", "tmc429_wram"], BENCH, &lines);
     let tail = text.lines().find(|l| l.starts_with("EDGES")).unwrap_or_else(|| panic!("{text}"));
     let f: Vec<&str> = tail.split_whitespace().collect();
     assert_eq!(f[1], CYCLES.to_string(), "{text}");
