@@ -2,9 +2,10 @@
 //! docs/rtl.md). They bound each nextpnr run (`--pnr-timeout`): nextpnr's router does not give up
 //! on a placement it cannot route, so a run past its time is stopped, its seed's entry says so,
 //! and no bitstream is left behind; those tests synthesize the TMC4210 (Yosys, about 20 s) and
-//! give nextpnr one second, far less than its placement takes. `scripts/fpga --until-met` places
-//! the seeds in order and stops at the first placement that meets the CLK; `scripts/rtl-report`
-//! ends with the worst path of each placement it lists (one TMC4210 placement, under a minute).
+//! give nextpnr one second, far less than its placement takes. `scripts/fpga` goes on after a
+//! place and route that fails as after one past its time; with `--until-met` it places the seeds
+//! in order and stops at the first placement that meets the CLK; `scripts/rtl-report` ends with
+//! the worst path of each placement it lists (one TMC4210 placement, under a minute).
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -38,6 +39,40 @@ fn fpga_stops_a_place_and_route_past_its_time_and_keeps_no_bitstream() {
     assert_eq!(o.status.code(), Some(1), "stdout:\n{stdout}\nstderr:\n{}", text(&o.stderr));
     assert!(stdout.contains("1: stopped after 1 s, 2: stopped after 1 s (no placement finished in time)"), "stdout:\n{stdout}");
     assert!(!out.join("icebreaker-tmc4210.bin").exists(), "the earlier bitstream is removed");
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// A seed whose place and route ends with an error (here a `nextpnr-ice40` ahead of the real one
+/// on PATH that fails seed 1 and runs the real one for the others) is listed as failed, its log
+/// named on stderr, and the sweep goes on: seed 2 runs, and is stopped past its one second.
+#[test]
+fn fpga_goes_on_after_a_place_and_route_that_fails() {
+    let out = scratch("fpga-failed");
+    let bin = out.join("bin");
+    std::fs::create_dir_all(&bin).unwrap();
+    let which = Command::new("sh").args(["-c", "command -v nextpnr-ice40"]).output().unwrap();
+    let real = text(&which.stdout).trim().to_string();
+    assert!(!real.is_empty(), "nextpnr-ice40 is on PATH (scripts/setup)");
+    let fake = bin.join("nextpnr-ice40");
+    std::fs::write(
+        &fake,
+        format!("#!/bin/sh\ncase \" $* \" in *\" --seed 1 \"*) echo 'ERROR: not routed' >&2; exit 1 ;; esac\nexec {real} \"$@\"\n"),
+    )
+    .unwrap();
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let path = format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default());
+    let o = Command::new(root().join("scripts/fpga"))
+        .args(["--chip", "tmc4210", "--seeds", "1 2", "--pnr-timeout", "1", "--out", out.to_str().unwrap()])
+        .env("PATH", path)
+        .output()
+        .unwrap();
+    let (stdout, stderr) = (text(&o.stdout), text(&o.stderr));
+    assert_eq!(o.status.code(), Some(1), "stdout:\n{stdout}\nstderr:\n{stderr}");
+    assert!(stdout.contains("1: place and route failed, 2: stopped after 1 s (no placement routed)"), "stdout:\n{stdout}");
+    let log = out.join("ice40-tmc4210.seed1.log");
+    assert!(stderr.contains(&format!("fpga: place and route failed for ice40 tmc4210 seed 1, see {}", log.display())), "stderr:\n{stderr}");
+    assert!(!out.join("icebreaker-tmc4210.bin").exists(), "no bitstream without a routed placement");
     std::fs::remove_dir_all(&out).ok();
 }
 
