@@ -191,10 +191,11 @@ module tmc429_top #(
         for (g = 0; g < 3; g = g + 1) begin : mot
             // a motor the variant lacks (the TMC4210's 1 and 2) never runs and is never written:
             // both as constants, so that synthesis removes its registers (mot_we is 0 for its
-            // SMDA already, but only through logic that is simplified after the registers are)
+            // SMDA already, but only through logic that is simplified after the registers are;
+            // scripts/motor-check)
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & (g < NMOT)),
-                .we(mot_we & (mot_sel == g) & (g < NMOT)), .widx(w_idx), .wdata(w_data),
+                .we((g < NMOT) ? (mot_we & (mot_sel == g)) : 1'b0), .widx(w_idx), .wdata(w_data),
                 .rsel(rd_idx), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
                 .cond_tick(cond_tick[g]), .ramp_tick(rtick[g]), .pulse_tick(ptick[g]),
