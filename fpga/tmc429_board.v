@@ -8,6 +8,7 @@
 // reset edge (the power-on reset), and nrst reaches the chip two CLK edges after it is
 // sampled (vector replay on the board: docs/fpga.md). Generic Verilog only: the synthesis tool
 // puts the I/O buffers on the pins.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_board #(

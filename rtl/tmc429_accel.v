@@ -24,6 +24,7 @@
 // takes that value unless the µC writes the motor's a_max in the operand edge itself, whose
 // data then holds (C3: the operand is a_max after the operand edge). A word not written since
 // reset reads 0 (C2).
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_schedule.vh"
 

@@ -38,6 +38,7 @@
 // `sck_ns`, `motor_ns` of the new state unless a datagram starts (`take` sets CS active,
 // SCK high, motor 0), so that the start is the last input of the pin levels.
 // Same function as tmc429_model::chain::Chain.
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_regmap.vh"
 

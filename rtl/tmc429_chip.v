@@ -12,6 +12,7 @@
 // input reads high (its internal pull-up), an absent output is tied off (nSCS2/nSCS3 1, POSCMP
 // 0, SDOZ_C not driven), so synthesis removes the logic behind it.
 // Same function as tmc429_model::Bonding.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_chip #(

@@ -7,6 +7,7 @@
 // selected if is_agtat and is_aleat are both > 0 (TMC429 §8.1.9 footnote *2), else is_aleat
 // (the previous selection holds while it counts). Between ramp ticks the selection holds. Power-on: is_aleat, counter 0. `i_scale` is the selected register value
 // of the current state. Same function as tmc429_model::current::CurrentScale.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_current (

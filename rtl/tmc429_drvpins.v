@@ -19,6 +19,7 @@
 // REF and the enable of that edge) and `mux_sw` shows it in the meantime through a
 // multiplexer, so it reads exactly as if stored in that edge while the pin's next level
 // does not reach a switch register in one cycle.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_drvpins #(

@@ -17,6 +17,7 @@
 //
 // Same function as tmc429_model::microstep::{lut_cell, scale, signal_bit}: bit_out for
 // (code, w, lut, i_scale, ...) is signal_bit when dac_q = dac.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_microstep (

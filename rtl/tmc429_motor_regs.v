@@ -14,6 +14,7 @@
 // velocity unit at its snapshot, are parameter RAMs of the register file read for the motor
 // whose condition slot is next (tmc429_pram) and of tmc429_vtarget. Register indices and
 // fields: rtl/tmc429_regmap.vh.
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_regmap.vh"
 

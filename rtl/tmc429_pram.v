@@ -14,6 +14,7 @@
 // (it is the old state's value); `ra` is the word read in this edge, for a user whose own
 // register takes the value after this edge. With one motor (NMOT = 1, the TMC4210) the word is
 // a flip-flop register loaded by the write: the same `val`, with less logic than RAM and forwarding.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_pram #(

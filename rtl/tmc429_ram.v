@@ -25,6 +25,7 @@
 // 0..35 = TMC429 Table 11-2 with One ($11) at the Zero/FD positions (TMC429 §11.4.2), cells
 // 36..63 = 0, cells 64..127 = the sine table of TMC428 Table 12-2, y(i) = min(63, int(1/2 +
 // 64 sin(pi i / 128))). CHIP = 0 (TMC428): all 0.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_ram #(

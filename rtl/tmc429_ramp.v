@@ -26,6 +26,7 @@
 //                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
 // µC writes (we, widx, wdata; any run level) take priority over all of these (C3); register
 // indices and fields: rtl/tmc429_regmap.vh.
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_regmap.vh"
 

@@ -7,6 +7,7 @@
 // switch reads inactive (0). TMC4210: L1 = REF_L (REF1), L2 = GP_IN (REF2), R1 = REF_R
 // (REF3) with mot1r = 1, no refmux and no REFR inputs. refmux = 1 (TMC428, TMC429): the
 // switches are the ones sampled through the 74HC157 on nSCS_S (tmc429_drvpins, C87).
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_refsw #(

@@ -12,6 +12,7 @@
 // motor whose condition slot is next (tmc429_pram). Per CHIP (0 TMC428, 1 TMC429, 2 TMC4210)
 // the registers a variant lacks read 0 and ignore writes (C21). Register indices, fields and
 // presence per variant: rtl/tmc429_regmap.vh.
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_regmap.vh"
 `include "tmc429_schedule.vh"

@@ -13,6 +13,7 @@
 // clk_config in this edge stores (`w_div`, a strobe the register file decodes one edge ahead,
 // with that write's data `w_ramp_div`, `w_pulse_div`). Same function as
 // tmc429_model::schedule.
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_schedule.vh"
 

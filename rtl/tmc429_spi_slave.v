@@ -11,6 +11,7 @@
 // output register left (the first falling edge presents bit 31, already on the pin). An SCK_C
 // edge in the cycle of the nSCS_C falling edge is ignored (C13). At the synchronized
 // rising edge of nSCS_C a frame of exactly 32 bits is executed (`exec` pulse, a register).
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_spi_slave (

@@ -12,6 +12,7 @@
 //
 // `step_n` / `dir_n` are the levels of the new state (before inv_stp / inv_dir), for the
 // output pin registers. Same function as tmc429_model::stepdir::StepDir.
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_stepdir (

@@ -5,6 +5,7 @@
 // t+2. The synchronizers run in power down as well (only the units behind them stop).
 // `s` is the first stage: the level `q` takes at the next edge, for a unit that forms an
 // edge-detect one edge ahead into a register (it must not be used as a level).
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_sync #(

@@ -11,6 +11,7 @@
 // motors the target velocity and the ramp tick's arithmetic), and the driver side: current
 // scaling (C75-C77), driver chain with the microstep unit (C70-C74, C80-C89), Step/Dir
 // (C91-C96), driver pins (C81, C87, C90). This module only wires them.
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_regmap.vh"
 

@@ -18,6 +18,7 @@
 // The inputs are stage A's registers of the motor being loaded (they hold until the load);
 // the stage's schedule is decoded by tmc429_vtarget from the next phase into registers
 // (b_load, b_run, b_k) and given here with the decodes they are formed from (n_b_load, n_b_k).
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_vroot #(

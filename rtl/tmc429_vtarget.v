@@ -28,6 +28,7 @@
 // a snapshot edge is written one edge later, so the snapshot gives the old value, as the
 // register did (C3); a word not written since reset reads 0 (C2). Register indices and fields:
 // rtl/tmc429_regmap.vh.
+`timescale 1ns / 1ps
 `default_nettype none
 `include "tmc429_regmap.vh"
 `include "tmc429_schedule.vh"

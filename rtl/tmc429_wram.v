@@ -9,6 +9,7 @@
 // read value is always the user's reset value, whatever a write put into the array.
 // A read in the edge of a write to the same word gives the old word in simulation; the user
 // never uses such a read (no_rw_check: a block RAM needs no collision logic for it).
+`timescale 1ns / 1ps
 `default_nettype none
 
 module tmc429_wram #(

@@ -9,6 +9,7 @@
 // Words: input bit 0..9 = nSCS_C, SCK_C, SDI_C, SDI_S, REF1, REF2, REF3, REFR1, REFR2, REFR3;
 // output bit 0..10 = nINT_SDO_C, SDOZ_C, SDOZ_C enable, nSCS_S, SCK_S, SDO_S, SDI_S out,
 // SDI_S enable, nSCS2, nSCS3, POSCMP.
+`timescale 1ns / 1ps
 package tmc429_pkg;
   localparam int TMC429_ABI_VERSION = 3;
   localparam int TMC429_OK = 0;

@@ -65,6 +65,7 @@ def plant(rtl: Path, out: Path, pin: str) -> Path:
     pass_params = ", ".join(f".{p}({p})" for p in d.parameters)
     clk = "clk"
     v = f"""// The planted bug of the examples (examples/verify/plant_bug.py): {pin} one CLK late.
+`timescale 1ns / 1ps
 `default_nettype none
 module {TOP} {'#(' + params + ') ' if params else ''}(
 {decl}

@@ -86,6 +86,7 @@ fn vectors() -> (Vec<Vector>, [usize; 3]) {
 }
 
 const BENCH: &str = r#"
+`timescale 1ns / 1ps
 module tb;
     reg clk = 0, rst = 1;
     reg tick = 0, v_nz = 0;

@@ -103,6 +103,7 @@ fn stream(seed: u64) -> Vec<String> {
 }
 
 const BENCH: &str = r#"
+`timescale 1ns / 1ps
 `include "tmc429_regmap.vh"
 module tb;
     reg clk = 0, rst = 1;

@@ -74,6 +74,7 @@ fn vectors(seed: u64) -> Vec<Vector> {
 }
 
 const BENCH: &str = r#"
+`timescale 1ns / 1ps
 module tb;
     reg clk = 0, rst = 1;
     reg run = 0, en = 0, step_in = 0, dir_in = 0, step_half = 0;

@@ -146,7 +146,9 @@ def simulate(sim: str, cfg: dict) -> dict:
     if sim == "icarus":
         args = ["-s", ports.WRAPPER]
     else:
-        args = ["-Wno-fatal", "-O3", "--x-assign", "fast", "--x-initial", "fast"]
+        # --timescale: the wrapper's, for the design's modules that have none (IEEE 1800-2017
+        # §3.14.2.3 wants one for all or none)
+        args = ["-Wno-fatal", "-O3", "--x-assign", "fast", "--x-initial", "fast", "--timescale", "1ns/1ps"]
     log = build / "build.log"
     try:
         with output_to(log):
