@@ -17,13 +17,14 @@ module tb_tmc429_dpi;
   int variants = 7, profile = TMC429_PROFILE_MOTION;
   logic [2:0] done, failed;
   logic go = 1'b0;
+  wire logic [2:0] vmask = variants[2:0];
 
   initial begin
     void'($value$plusargs("seed=%d", seed));
     void'($value$plusargs("cycles=%d", cycles));
     void'($value$plusargs("variants=%d", variants));
     void'($value$plusargs("profile=%d", profile));
-    if (tmc429_abi_version() != TMC429_ABI_VERSION)
+    if (int'(tmc429_abi_version()) != TMC429_ABI_VERSION)
       $fatal(2, "libtmc429 has ABI %0d, tmc429_pkg.sv expects %0d", tmc429_abi_version(), TMC429_ABI_VERSION);
     go = 1'b1;
   end
@@ -35,8 +36,8 @@ module tb_tmc429_dpi;
   end
 
   always @(posedge clk) begin
-    if (go && ((done | ~3'(variants)) == 3'b111)) begin
-      if ((failed & 3'(variants)) != 0) $fatal(1, "mismatch");
+    if (go && ((done | ~vmask) == 3'b111)) begin
+      if ((failed & vmask) != 3'b000) $fatal(1, "mismatch");
       $finish;
     end
   end
