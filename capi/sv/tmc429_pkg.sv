@@ -11,6 +11,8 @@
 // SDI_S enable, nSCS2, nSCS3, POSCMP.
 `timescale 1ns / 1ps
 package tmc429_pkg;
+  // the constants of tmc429.h: a testbench uses some of them (no unused-parameter lint for the rest)
+  /* verilator lint_off UNUSEDPARAM */
   localparam int TMC429_ABI_VERSION = 3;
   localparam int TMC429_OK = 0;
   localparam int TMC429_CHIP_TMC428 = 0;
@@ -25,6 +27,7 @@ package tmc429_pkg;
   localparam int TMC429_PROFILE_DRIVERS = 2;
   localparam int TMC429_PROFILE_REGISTERS = 3;
   localparam int TMC429_PROFILE_FULL = 4;
+  /* verilator lint_on UNUSEDPARAM */
 
   import "DPI-C" function int unsigned tmc429_abi_version();
   import "DPI-C" function string tmc429_strerror(input int code);
