@@ -82,6 +82,21 @@ fn an_implicit_truncation_fails_with_its_file_and_line() {
     assert!(out.contains("0 errors, 1 warning"), "{out}");
 }
 
+/// The packages the script takes for each variant (its own list, PACKAGES) are the model's
+/// (`Package::of`, C90) and 0: a package the model lacks exits 2, one it has elaborates.
+#[test]
+fn the_packages_taken_are_the_models() {
+    use tmc429_model::{Chip, Package};
+    for (code, chip) in [(0, Chip::Tmc428), (1, Chip::Tmc429), (2, Chip::Tmc4210)] {
+        let has: Vec<u32> = Package::of(chip).iter().map(|p| p.pins()).collect();
+        for pins in [0, 16, 20, 24, 32] {
+            let o = rtl_slang(&[&code.to_string(), &pins.to_string()]);
+            let want = if pins == 0 || has.contains(&pins) { 0 } else { 2 };
+            assert_eq!(o.status.code(), Some(want), "CHIP={code} PINS={pins}: {}", text(&o.stderr));
+        }
+    }
+}
+
 #[test]
 fn bad_arguments_exit_2_with_the_usage() {
     for args in [&[][..], &["3"], &["x"], &["1", "24", "9"], &["--rtl", "/nonexistent", "1"], &["--dpi", "1"], &["1", "99"], &["2", "24"]] {
