@@ -30,9 +30,12 @@ module tmc429_motor_regs #(
     /* verilator lint_off UNUSEDSIGNAL */  // the IDX whose read value is in the shadow RAM
     input  wire [15:0] rsel,      // read address IDX, one-hot (registered in tmc429_regfile)
     /* verilator lint_on UNUSEDSIGNAL */
-    output wire [23:0] rdata,
+    input  wire        rd_load,   // the read data is loaded in this edge (tmc429_spi_slave)
+    output reg  [23:0] rdata,     // 0 outside rd_load
     input  wire        sw_l,      // mapped left switch (C60)
     input  wire        sw_r,      // mapped right switch
+    input  wire        sample_tick, // the next edge is the condition slot: this one takes its
+                                    // conditions (C52)
     input  wire        cond_tick, // the motor's commit phase: its condition slot (C41)
     input  wire        ramp_tick, // ramp phase of a ramp frame (C40, C41)
     input  wire        pulse_tick,// pulse phase of a pulse frame
@@ -88,7 +91,7 @@ module tmc429_motor_regs #(
 
     // ---- ramp and pulse generator, switch stop, latch ------------------------------------
     tmc429_ramp #(.HAS_USTEP(HAS_USTEP)) u_ramp (
-        .clk(clk), .rst(rst), .run(run), .cond_tick(cond_tick), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
+        .clk(clk), .rst(rst), .run(run), .sample_tick(sample_tick), .cond_tick(cond_tick), .ramp_tick(ramp_tick), .pulse_tick(pulse_tick),
         .rm(rm), .x_target(x_target), .v_min(v_min), .ref_conf(ref_conf),
         .usrs(usrs), .tol_m1(tol_m1), .vt(vt), .sw_l(sw_l), .sw_r(sw_r),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
@@ -100,20 +103,26 @@ module tmc429_motor_regs #(
         .v_actual(v_actual), .v_rnd(v_rnd));
 
     // ---- interrupt conditions (C63), from the old state of the edge before the slot ------
-    // registered in every edge: the slot applies the conditions of the edge before it (C52).
+    // registered in that edge (sample_tick): the slot applies them (C52).
     // The switch stop, the selected switch (REF_RnL) and |x_actual| < tolerance are registered
     // beside the stop actions in tmc429_ramp (c_stop, c_sel, c_tol); here the two switch
     // levels (each HIGH condition and its LOW complement), x_actual = 0 and xEQt
     reg        cq_r, cq_l, cq_x0, cq_xeqt;
-    wire [7:0] cond_q = {
-        cq_r, cq_l, ~cq_r, ~cq_l,   // 7..4 STOP_RIGHT_HIGH, STOP_LEFT_HIGH, _RIGHT_LOW, _LEFT_LOW
-        c_stop,                     // 3 STOP
-        cq_x0 & ~c_sel,             // 2 REF_MISS
-        c_sel & ~c_tol,             // 1 REF_WRONG: the selected switch, |x_actual| >= tolerance
-        cq_xeqt                     // 0 POS_END
-    };
+    // the conditions the slot applies, formed in the clocked block only in the slot and in a
+    // write of the interrupt register (docs/rtl.md, "Logic in its slot")
+    function [7:0] cond_of;
+        input r, l, stp, x0, sl, tl, eq;
+        begin
+            cond_of = {
+                r, l, ~r, ~l,   // 7..4 STOP_RIGHT_HIGH, STOP_LEFT_HIGH, _RIGHT_LOW, _LEFT_LOW
+                stp,            // 3 STOP
+                x0 & ~sl,       // 2 REF_MISS
+                sl & ~tl,       // 1 REF_WRONG: the selected switch, |x_actual| >= tolerance
+                eq              // 0 POS_END
+            };
+        end
+    endfunction
     wire       slot   = run & cond_tick;
-    wire [7:0] events = slot ? (cond_q & ~int_hist) : 8'd0;
 
     wire       w_int   = we & (widx == `TMC429_IDX_INTERRUPT);
     wire [7:0] mask_nx = w_int ? wdata[`TMC429_F_INTERRUPT_MASK] : int_mask;
@@ -135,14 +144,21 @@ module tmc429_motor_regs #(
             cq_x0 <= COND_RESET[2];  cq_xeqt <= COND_RESET[0];
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
         end else begin
-            cq_r    <= sw_r;
-            cq_l    <= sw_l;
-            cq_x0   <= x_actual == 24'd0;
-            cq_xeqt <= xeqt;
-            if (slot)
-                int_hist <= cond_q;
-            int_mask  <= mask_nx;
-            int_flags <= ((int_flags & ~w1c) | events) & mask_nx;   // C3, C26
+            if (sample_tick) begin   // only where taken (docs/rtl.md, "Logic in its slot")
+                cq_r    <= sw_r;
+                cq_l    <= sw_l;
+                cq_x0   <= x_actual == 24'd0;
+                cq_xeqt <= xeqt;
+            end
+            if (slot | w_int) begin : irq_flags   // only where they change
+                reg [7:0] cond_q, events;
+                cond_q = cond_of(cq_r, cq_l, c_stop, cq_x0, c_sel, c_tol, cq_xeqt);
+                events = slot ? (cond_q & ~int_hist) : 8'd0;
+                if (slot)
+                    int_hist <= cond_q;
+                int_mask  <= mask_nx;
+                int_flags <= ((int_flags & ~w1c) | events) & mask_nx;   // C3, C26
+            end
             if (we) begin
                 case (widx)
                 `TMC429_IDX_X_TARGET: x_target <= wdata[`TMC429_F_X_TARGET];
@@ -170,15 +186,22 @@ module tmc429_motor_regs #(
 
     // read value of the state (C21-C27); the bits a µC write sets come from the shadow RAM
     // of the register file and are 0 here (ref_conf_rm: lp only; interrupt: int_flags only).
-    // The IDX is one-hot, so the multiplexer is an AND-OR.
+    // The IDX is one-hot, so the multiplexer is an AND-OR. It is 0 outside the edge that loads
+    // it, as the register file's rd_data (a simulator evaluates it only there; docs/rtl.md,
+    // "Logic in its slot").
     // v_actual (C42) is formed in the register file from V of the selected motor
-    assign rdata = ({24{rsel[`TMC429_IDX_X_ACTUAL]}} & x_actual)
-                 | ({24{rsel[`TMC429_IDX_V_TARGET]}} & {12'd0, v_target})
-                 | ({24{rsel[`TMC429_IDX_A_ACTUAL]}} & {12'd0, a_actual})
-                 | ({24{rsel[`TMC429_IDX_REF_CONF_RM]}} & ({23'd0, lp} << `TMC429_F_LP))
-                 | ({24{rsel[`TMC429_IDX_INTERRUPT]}} & {16'd0, int_flags})
-                 | ({24{rsel[`TMC429_IDX_X_LATCHED]}} & x_latched)
-                 | ({24{rsel[`TMC429_IDX_USTEP_COUNT] & (HAS_USTEP != 0)}} & {16'd0, ustep});
+    always @(*) begin
+        if (!rd_load)
+            rdata = 24'd0;
+        else
+            rdata = ({24{rsel[`TMC429_IDX_X_ACTUAL]}} & x_actual)
+                  | ({24{rsel[`TMC429_IDX_V_TARGET]}} & {12'd0, v_target})
+                  | ({24{rsel[`TMC429_IDX_A_ACTUAL]}} & {12'd0, a_actual})
+                  | ({24{rsel[`TMC429_IDX_REF_CONF_RM]}} & ({23'd0, lp} << `TMC429_F_LP))
+                  | ({24{rsel[`TMC429_IDX_INTERRUPT]}} & {16'd0, int_flags})
+                  | ({24{rsel[`TMC429_IDX_X_LATCHED]}} & x_latched)
+                  | ({24{rsel[`TMC429_IDX_USTEP_COUNT] & (HAS_USTEP != 0)}} & {16'd0, ustep});
+    end
 endmodule
 
 `default_nettype wire

@@ -7,9 +7,9 @@
 // functions of its registers and inputs. The port list is the boundary at which test vectors of
 // the unit are taken (rtl/README.md).
 //
-// The conditions of the old state are registered in every edge, so that the motor's condition
-// slot (cond_tick: its commit phase, every frame) with run = 1 applies those of the edge before
-// it (C52):
+// The conditions of the old state are registered in the edge before the motor's condition slot
+// (sample_tick), so that the slot (cond_tick: its commit phase, every frame) with run = 1
+// applies those of the edge before it (C52):
 //   stop (C61)     stop_L = !DISABLE_STOP_L & L & (V < 0 | V = 0 & vt < 0) & !tol, stop_R
 //                  symmetric; tol = |x_actual| < dx_ref_tolerance masks both switches
 //   stop flops     stop_hard := at_stop (RAMP/SOFT, x_actual = x_target, |V|>>8 <= v_min, C52)
@@ -36,6 +36,8 @@ module tmc429_ramp #(
     input  wire        clk,
     input  wire        rst,
     input  wire        run,        // 0 while powered down (C66)
+    input  wire        sample_tick,// the next edge is motor m's condition slot: this edge takes
+                                   // the conditions the slot applies (C52)
     input  wire        cond_tick,  // phase 14 + 7m, motor m's commit: its condition slot (C41)
     input  wire        ramp_tick,  // phase 16 + 7m of a ramp frame of this motor m (C40, C41)
     input  wire        pulse_tick, // phase 17 + 7m of a pulse frame of this motor
@@ -77,7 +79,7 @@ module tmc429_ramp #(
     output wire        xeqt,       // x_actual == x_target
     output wire        stop,       // switch stop condition (STOP interrupt, C63)
     output wire        tol_ok,     // |x_actual| < dx_ref_tolerance
-    // the same conditions of the edge before (registered in every edge): the switch stop, the
+    // the same conditions of the last sample_tick edge (registers): the switch stop, the
     // selected switch (REF_RnL) and the tolerance window, which the motor's condition slot
     // applies (C52, C63)
     output reg         c_stop,
@@ -113,14 +115,22 @@ module tmc429_ramp #(
     // above 0 and the low bits below it. With t = dx_ref_tolerance - 1 (a register, t >= 0) and
     // n = x_actual[23]: x >= 0: x_lo < tol, i.e. x_lo + ~t has no carry out of 12 bits; x < 0:
     // |x| = ~x_lo + 1 < tol, i.e. ~x_lo + ~t + 1 has none. One carry chain, (x_lo ^ n) + ~t + n,
-    // whose carry out enters the conditions below last: one AND with x_hi, no second chain
-    wire        x_neg = x_actual[23];
-    wire        x_hi = (x_actual[22:12] == {11{x_neg}}) & ~tol_m1[12];
-    /* verilator lint_off UNUSEDSIGNAL */     // only the carry out is used
-    wire [12:0] x_win = {1'b0, x_actual[11:0] ^ {12{x_neg}}} + {1'b0, ~tol_m1[11:0]}
-                      + {12'd0, x_neg};
-    /* verilator lint_on UNUSEDSIGNAL */
-    assign tol_ok = x_hi & ~x_win[12];
+    // whose carry out enters the conditions below last: one AND with the high bits' test, no
+    // second chain
+    function win;
+        input [23:0] x;
+        input [12:0] t;
+        reg          n;
+        /* verilator lint_off UNUSEDSIGNAL */     // only the carry out is used
+        reg   [12:0] w;
+        /* verilator lint_on UNUSEDSIGNAL */
+        begin
+            n   = x[23];
+            w   = {1'b0, x[11:0] ^ {12{n}}} + {1'b0, ~t[11:0]} + {12'd0, n};
+            win = (x[22:12] == {11{n}}) & ~t[12] & ~w[12];
+        end
+    endfunction
+    assign tol_ok = win(x_actual, tol_m1);
 
     // ref_conf is bits REF_RnL..DISABLE_STOP_L of ref_conf_rm
     localparam RC_L = 0;
@@ -129,25 +139,38 @@ module tmc429_ramp #(
     localparam RC_RNL = `TMC429_F_REF_RNL - `TMC429_F_DISABLE_STOP_L;
     wire rnl      = ref_conf[RC_RNL];
     wire soft_sw  = ref_conf[RC_SOFT];
-    wire vt_zero  = vt == 12'd0;
-    wire mov_neg  = v_neg | (v_zero & vt[11]);
-    wire mov_pos  = (~v_neg & ~v_zero) | (v_zero & ~vt[11] & ~vt_zero);
-    // a switch stop but for the tolerance window: pre_stop; with SOFT_STOP: pre_soft, without:
-    // pre_hard (the window's carry out enters each condition last)
-    wire pre_l    = ~ref_conf[RC_L] & sw_l & mov_neg;
-    wire pre_r    = ~ref_conf[RC_R] & sw_r & mov_pos;
-    wire pre_stop = pre_l | pre_r;
-    wire pre_soft = pre_stop & soft_sw;
-    wire pre_hard = pre_stop & ~soft_sw;
-    assign stop   = pre_stop & ~tol_ok;
+    // a switch stop but for the tolerance window (the window's carry out enters each condition
+    // last): moving toward an enabled switch that is active
+    function pre_stop;
+        input [3:0]  rc;
+        input        l, r, vn, vz;
+        input [11:0] t;
+        reg          mov_neg, mov_pos;
+        begin
+            mov_neg  = vn | (vz & t[11]);
+            mov_pos  = (~vn & ~vz) | (vz & ~t[11] & (t != 12'd0));
+            pre_stop = (~rc[RC_L] & l & mov_neg) | (~rc[RC_R] & r & mov_pos);
+        end
+    endfunction
+    assign stop   = pre_stop(ref_conf, sw_l, sw_r, v_neg, v_zero, vt) & ~tol_ok;
     wire sel      = rnl ? sw_r : sw_l;
 
     // ---- stop at target (C52) ------------------------------------------------------------------
     assign xeqt   = x_actual == x_target;
-    /* verilator lint_off UNUSEDSIGNAL */     // borrow: |V|>>8 > v_min
-    wire [12:0] m_cmp = {1'b0, v_min, 1'b0} - {1'b0, v_mx, v_mc};
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire at_stop  = ~rm[1] & xeqt & ~m_cmp[12];
+    // at_stop: RAMP or SOFT mode, at the target, |V|>>8 <= v_min (no borrow of v_min - |V|>>8)
+    function at_stop;
+        input        rs;     // RAMP_MODE or SOFT_MODE
+        input        eq;
+        input [10:0] vmin, mx;
+        input        mc;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg   [12:0] d;
+        /* verilator lint_on UNUSEDSIGNAL */
+        begin
+            d       = {1'b0, vmin, 1'b0} - {1'b0, mx, mc};
+            at_stop = rs & eq & ~d[12];
+        end
+    endfunction
 
     // ---- ramp tick (C51): the results of tmc429_accel ------------------------------------
     wire        tick  = ramp_tick & (rm != 2'd3);
@@ -163,17 +186,21 @@ module tmc429_ramp #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [10:0] p_sum = stop_hard ? acc : p_t[11:1];
     wire        p_step = pulse_tick & ~stop_hard & p_t[12];
-    reg  [7:0]  inc;                 // +-2^(6-usrs) by the sign of V, usrs 7 as 6
-    always @(*) begin
-        case ({v_neg, usrs})
-        4'd0: inc = 8'd64;  4'd1: inc = 8'd32;  4'd2: inc = 8'd16;  4'd3: inc = 8'd8;
-        4'd4: inc = 8'd4;   4'd5: inc = 8'd2;   4'd6, 4'd7: inc = 8'd1;
-        4'd8: inc = 8'hC0;  4'd9: inc = 8'hE0;  4'd10: inc = 8'hF0; 4'd11: inc = 8'hF8;
-        4'd12: inc = 8'hFC; 4'd13: inc = 8'hFE; default: inc = 8'hFF;
-        endcase
-    end
-    wire [23:0] x_stp = x_actual + {{23{v_neg}}, 1'b1};
-    wire [7:0]  u_stp = ustep + inc;
+    // The step's sums are formed in the clocked block, only in an edge that steps (docs/rtl.md,
+    // "Logic in its slot"): a simulator evaluates them in no other edge. The carry out p_step
+    // stays one net (a LUT behind the carry chain that every enable of the step reads)
+    function [7:0] inc;              // +-2^(6-usrs) by the sign of V, usrs 7 as 6
+        input       neg;
+        input [2:0] rs;
+        begin
+            case ({neg, rs})
+            4'd0: inc = 8'd64;  4'd1: inc = 8'd32;  4'd2: inc = 8'd16;  4'd3: inc = 8'd8;
+            4'd4: inc = 8'd4;   4'd5: inc = 8'd2;   4'd6, 4'd7: inc = 8'd1;
+            4'd8: inc = 8'hC0;  4'd9: inc = 8'hE0;  4'd10: inc = 8'hF0; 4'd11: inc = 8'hF8;
+            4'd12: inc = 8'hFC; 4'd13: inc = 8'hFE; default: inc = 8'hFF;
+            endcase
+        end
+    endfunction
 
     // ---- µC writes (C3, C23) ------------------------------------------------------------------
     wire        w_x   = we & (widx == `TMC429_IDX_X_ACTUAL);
@@ -201,12 +228,20 @@ module tmc429_ramp #(
             c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
             c_stop <= 1'b0;     c_tol <= 1'b0;
         end else begin
-            c_hard  <= at_stop | (pre_hard & ~tol_ok);
-            c_soft  <= pre_soft & ~tol_ok;
-            c_sel   <= sel;
-            c_stop  <= stop;
-            c_tol   <= tol_ok;
-            c_latch <= lp & va_nz & (sel != ref_prev);
+            // the conditions are formed only in the edge that takes them (docs/rtl.md, "Logic
+            // in its slot"): a simulator evaluates them in no other edge
+            if (sample_tick) begin : sample
+                reg tol, pre;
+                tol      = win(x_actual, tol_m1);
+                pre      = pre_stop(ref_conf, sw_l, sw_r, v_neg, v_zero, vt);
+                // with SOFT_STOP the switch stop is the soft action, without it the hard one
+                c_hard  <= at_stop(~rm[1], xeqt, v_min, v_mx, v_mc) | (pre & ~soft_sw & ~tol);
+                c_soft  <= pre & soft_sw & ~tol;
+                c_sel   <= sel;
+                c_stop  <= pre & ~tol;
+                c_tol   <= tol;
+                c_latch <= lp & va_nz & (sel != ref_prev);
+            end
             if (run) begin
                 if (cond_tick) begin
                     ref_prev <= c_sel;
@@ -226,8 +261,8 @@ module tmc429_ramp #(
                 if (pulse_tick)
                     acc <= p_sum;
                 if (p_step) begin
-                    x_actual <= x_stp;
-                    ustep <= u_stp;
+                    x_actual <= x_actual + {{23{v_neg}}, 1'b1};
+                    ustep <= ustep + inc(v_neg, usrs);
                     dir <= v_neg;
                 end
             end

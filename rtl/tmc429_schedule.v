@@ -31,6 +31,8 @@ module tmc429_schedule (
     input  wire [3:0]  w_pulse_div,
     output reg  [19:0] prescaler,    // the pre-divider counter C (C40), 20 bits as the model
     output reg  [2:0]  cond_tick,    // motor m's condition slot is this edge's (bit m)
+    output wire [2:0]  sample_tick,  // cond_tick after this edge: this edge takes the slot's
+                                     // conditions (C52)
     output reg  [2:0]  ramp_tick,    // motor m's ramp tick (0 while powered down)
     output reg  [2:0]  pulse_tick,   // motor m's pulse tick (0 while powered down)
     output wire [2:0]  ramp_tick_nx, // ramp_tick after this edge (its register's input)
@@ -80,6 +82,9 @@ module tmc429_schedule (
             wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_PULSE - 5'd1) : (ph == PH_PULSE));
             assign ramp_ld[g] = ph_ramp_nx;
             assign ramp_tick_nx[g] = ph_ramp_nx & r_due;
+            // the condition slot: the commit phase of every frame, whether the core runs in
+            // it or not (tmc429_ramp acts on it only with run)
+            assign sample_tick[g] = run ? (ph == PH_COND - 5'd1) : (ph == PH_COND);
             always @(posedge clk) begin
                 if (rst) begin
                     ramp_tick[g] <= 1'b0;
@@ -88,9 +93,7 @@ module tmc429_schedule (
                 end else begin
                     ramp_tick[g] <= ramp_tick_nx[g];
                     pulse_tick[g] <= ph_pulse_nx & p_due;
-                    // the condition slot: the commit phase of every frame, whether the core
-                    // runs in it or not (tmc429_ramp acts on it only with run)
-                    cond_tick[g] <= run ? (ph == PH_COND - 5'd1) : (ph == PH_COND);
+                    cond_tick[g] <= sample_tick[g];
                 end
             end
         end

@@ -33,7 +33,7 @@ module tmc429_stepdir (
 
     reg [1:0]  state, state_n;
     reg [8:0]  cnt, cnt_n;
-    reg [23:0] backlog, backlog_n;
+    reg [23:0] backlog;
 
     wire [8:0]  t_step = {stpdiv + 5'd1, 4'd0};
     // The backlog after the motion core's step, b = backlog + s (s = +-1 or 0), is not formed:
@@ -59,13 +59,20 @@ module tmc429_stepdir (
     wire [2:0]  d_tk   = dir ? (s_pos ? 3'd2 : (s_neg ? 3'd0 : 3'd1))
                              : (s_pos ? 3'd0 : (s_neg ? 3'd6 : 3'd7));
     wire [2:0]  dlt    = take ? d_tk : s_d;                                         // -2..2
-    wire [23:0] bl     = backlog + {{21{dlt[2]}}, dlt};
-    wire        e_hi0  = backlog[23:3] == 21'd0;
-    wire        e_hi1  = backlog[23:3] == 21'h1FFFFF;
-    wire [6:0]  e      = {e_hi0 & (backlog[2:0] == 3'd3), e_hi0 & (backlog[2:0] == 3'd2),
-                          e_hi0 & (backlog[2:0] == 3'd1), e_hi0 & (backlog[2:0] == 3'd0),
-                          e_hi1 & (backlog[2:0] == 3'd7), e_hi1 & (backlog[2:0] == 3'd6),
-                          e_hi1 & (backlog[2:0] == 3'd5)};   // backlog = 3 .. -3
+    // backlog = 3 .. -3, one bit each (e[v + 3]); the backlog's next state and these
+    // comparisons are formed only where the unit runs in Step/Dir mode (the clocked block
+    // below), so that a simulator evaluates them only there (docs/rtl.md, "Logic in its slot")
+    function [6:0] near;
+        input [23:0] b;
+        reg hi0, hi1;
+        begin
+            hi0  = b[23:3] == 21'd0;
+            hi1  = b[23:3] == 21'h1FFFFF;
+            near = {hi0 & (b[2:0] == 3'd3), hi0 & (b[2:0] == 3'd2), hi0 & (b[2:0] == 3'd1),
+                    hi0 & (b[2:0] == 3'd0), hi1 & (b[2:0] == 3'd7), hi1 & (b[2:0] == 3'd6),
+                    hi1 & (b[2:0] == 3'd5)};
+        end
+    endfunction
     // bl = v for v = -1, 0, 1: backlog = v - dlt, e index v - dlt + 3
     function bl_is;
         input [6:0] ev;
@@ -92,18 +99,15 @@ module tmc429_stepdir (
     always @(*) begin
         state_n   = state;
         cnt_n     = cnt;
-        backlog_n = backlog;
         step_n    = step;
         dir_n     = dir;
         if (run) begin
             if (!en) begin
                 state_n   = READY;
                 cnt_n     = 9'd0;
-                backlog_n = 24'd0;
                 step_n    = 1'b0;
                 dir_n     = 1'b0;
             end else begin
-                backlog_n = bl;
                 if (hold) begin
                     cnt_n = cnt - 9'd1;
                 end else if (pend) begin
@@ -142,12 +146,17 @@ module tmc429_stepdir (
             state   <= state_n;
             cnt     <= cnt_n;
             hold    <= hold_n;
-            if (run) begin
-                b_z  <= ~en | bl_is(e, dlt, 0);
-                b_p1 <= en & bl_is(e, dlt, 1);
-                b_m1 <= en & bl_is(e, dlt, -1);
+            if (run & en) begin
+                backlog <= backlog + {{21{dlt[2]}}, dlt};
+                b_z  <= bl_is(near(backlog), dlt, 0);
+                b_p1 <= bl_is(near(backlog), dlt, 1);
+                b_m1 <= bl_is(near(backlog), dlt, -1);
+            end else if (run) begin
+                backlog <= 24'd0;
+                b_z  <= 1'b1;
+                b_p1 <= 1'b0;
+                b_m1 <= 1'b0;
             end
-            backlog <= backlog_n;
             step    <= step_n;
             dir     <= dir_n;
         end

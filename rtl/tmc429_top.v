@@ -130,7 +130,7 @@ module tmc429_top #(
     /* verilator lint_on UNUSEDSIGNAL */
     // frame schedule <-> register file and motors
     wire        pd_nx;
-    wire [2:0]  cond_tick, rtick, rtick_nx, ptick, ramp_ld, w_div;
+    wire [2:0]  sample_tick, cond_tick, rtick, rtick_nx, ptick, ramp_ld, w_div;
     wire [11:0] ramp_div, pulse_div;
     wire [3:0]  w_ramp_div, w_pulse_div;
     wire [23:0] cover_datagram;
@@ -197,9 +197,10 @@ module tmc429_top #(
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & (g < NMOT)),
                 .we((g < NMOT) ? (mot_we & (mot_sel == g)) : 1'b0), .widx(w_idx), .wdata(w_data),
-                .rsel(rd_idx), .rdata(m_rdata[24*g+23:24*g]),
+                .rsel(rd_idx), .rd_load(rd_load), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
-                .cond_tick(cond_tick[g]), .ramp_tick(rtick[g]), .pulse_tick(ptick[g]),
+                .sample_tick(sample_tick[g]), .cond_tick(cond_tick[g]),
+                .ramp_tick(rtick[g]), .pulse_tick(ptick[g]),
                 .vt(m_vt[12*g+11:12*g]), .v_min(cond_vmin), .tol_m1(cond_tol_m1),
                 .v_hold(m_v_hold[20*g+19:20*g]), .stop_soft(m_stop_soft[g]),
                 .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp),
@@ -238,7 +239,8 @@ module tmc429_top #(
         .clk(clk), .rst(rst), .run(~pd), .pd_nx(pd_nx),
         .ramp_div(ramp_div), .pulse_div(pulse_div),
         .w_div(w_div), .w_ramp_div(w_ramp_div), .w_pulse_div(w_pulse_div),
-        .prescaler(prescaler), .cond_tick(cond_tick), .ramp_tick(rtick), .pulse_tick(ptick),
+        .prescaler(prescaler), .sample_tick(sample_tick), .cond_tick(cond_tick),
+        .ramp_tick(rtick), .pulse_tick(ptick),
         .ramp_tick_nx(rtick_nx), .ramp_ld(ramp_ld));
 
     // ---- pins (C11, C90) --------------------------------------------------------------------

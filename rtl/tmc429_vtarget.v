@@ -133,26 +133,23 @@ module tmc429_vtarget #(
     end
 
     // ---- A: snapshot, c, multiply ------------------------------------------------------
-    reg [23:0] sx_t, sx_a;
-    reg [1:0]  s_rm;
-    reg [11:0] s_vtg;
-    reg        s_be;
-    always @(*) begin
-        case (a_m)
-        2'd1: begin
-            sx_t = x_target[47:24]; sx_a = x_actual[47:24]; s_rm = rm[3:2];
-            s_vtg = v_target[23:12]; s_be = brake_en[1];
+    // The snapshot's select of motor a_m, and every stage's arithmetic below, are formed in the
+    // clocked blocks, only in the edges that take them (docs/rtl.md, "Logic in its slot"): a
+    // simulator evaluates them in no other edge.
+    function [62:0] snap_of;      // {x_target, x_actual, rm, v_target, brake_en} of motor m
+        input [1:0]  m;
+        input [71:0] xt, xa;
+        input [5:0]  r;
+        input [35:0] vtg;
+        input [2:0]  be;
+        begin
+            case (m)
+            2'd1:    snap_of = {xt[47:24], xa[47:24], r[3:2], vtg[23:12], be[1]};
+            2'd2:    snap_of = {xt[71:48], xa[71:48], r[5:4], vtg[35:24], be[2]};
+            default: snap_of = {xt[23:0], xa[23:0], r[1:0], vtg[11:0], be[0]};
+            endcase
         end
-        2'd2: begin
-            sx_t = x_target[71:48]; sx_a = x_actual[71:48]; s_rm = rm[5:4];
-            s_vtg = v_target[35:24]; s_be = brake_en[2];
-        end
-        default: begin
-            sx_t = x_target[23:0]; sx_a = x_actual[23:0]; s_rm = rm[1:0];
-            s_vtg = v_target[11:0]; s_be = brake_en[0];
-        end
-        endcase
-    end
+    endfunction
 
     // parameter RAMs: the read at the snapshot edge is the snapshot of v_min, v_max, pmul, pdiv.
     // A write in a snapshot edge is deferred by one edge (the snapshot takes the old value,
@@ -208,48 +205,51 @@ module tmc429_vtarget #(
     reg [7:0]  a_w;               // multiplier word p_mul, consumed from the top
     reg [28:0] acc;
 
-    wire        dx_neg = a_dx[23];
-    // |dx| - 1 (RAMP) or |dx| (SOFT): dx ^ sign plus 0, +1 or -1
-    /* verilator lint_off UNUSEDSIGNAL */   // bits 23:19 are replaced by c_big
-    wire [23:0] c0 = (a_dx ^ {24{dx_neg}})
-                   + (a_soft ? {23'd0, dx_neg} : {24{~dx_neg}});
-    /* verilator lint_on UNUSEDSIGNAL */
-    // |dx| >= 2^19, from dx itself beside the sum (dx = 0 in RAMP_MODE, where |dx| - 1 wraps,
-    // gives no target velocity whatever c is)
-    wire        c_big = dx_neg ? ((a_dx[22:19] != 4'hF) | (a_dx[18:0] == 19'd0))
-                               : (a_dx[22:19] != 4'h0);
-    wire [18:0] c_val = c_big ? {18'h3FFFF, a_soft} : c0[18:0];   // C43: |dx| <= 2^19-1
-    // u: RAMP 1-e; SOFT 2, 1, 0, 0 for pdiv[1:0] = 0..3
-    wire [1:0]  u = a_soft ? (a_pdiv[1] ? 2'd0 : (a_pdiv[0] ? 2'd1 : 2'd2))
-                           : {1'b0, ~a_pdiv[0]};
-    wire [20:0] cv_u = {2'b00, c_val} << u;
-    wire [28:0] h1 = {acc[26:0], 2'b00} + (a_w[7] ? {7'd0, a_cv, 1'b0} : 29'd0);
-    wire [28:0] h2 = h1 + (a_w[6] ? {8'd0, a_cv} : 29'd0);
-
     always @(posedge clk) begin
         if (rst) begin
             a_dx <= 24'd0; a_rm <= 2'd0; a_soft <= 1'b0;
             a_vtg <= 12'd0; a_be <= 1'b0; a_h <= 5'd0;
             a_sgn <= 1'b0; a_zero <= 1'b1; a_cv <= 21'd0; a_w <= 8'd0; acc <= 29'd0;
         end else if (run) begin
-            if (a_snap) begin
-                a_dx <= sx_t - sx_a;     // C43: 24-bit wrap-around
-                a_rm <= s_rm;
-                a_soft <= s_rm == 2'd1;
-                a_vtg <= s_vtg;
-                a_be <= s_be;
+            if (a_snap) begin : snap
+                reg [62:0] sn;
+                sn      = snap_of(a_m, x_target, x_actual, rm, v_target, brake_en);
+                a_dx   <= sn[62:39] - sn[38:15];     // C43: 24-bit wrap-around
+                a_rm   <= sn[14:13];
+                a_soft <= sn[14:13] == 2'd1;
+                a_vtg  <= sn[12:1];
+                a_be   <= sn[0];
             end
-            if (a_c) begin
+            if (a_c) begin : cval
+                reg        dx_neg, c_big;
+                /* verilator lint_off UNUSEDSIGNAL */   // bits 23:19 are replaced by c_big
+                reg [23:0] c0;
+                /* verilator lint_on UNUSEDSIGNAL */
+                reg [18:0] c_val;
+                reg [1:0]  u;
+                dx_neg = a_dx[23];
+                // |dx| - 1 (RAMP) or |dx| (SOFT): dx ^ sign plus 0, +1 or -1
+                c0     = (a_dx ^ {24{dx_neg}}) + (a_soft ? {23'd0, dx_neg} : {24{~dx_neg}});
+                // |dx| >= 2^19, from dx itself beside the sum (dx = 0 in RAMP_MODE, where
+                // |dx| - 1 wraps, gives no target velocity whatever c is)
+                c_big  = dx_neg ? ((a_dx[22:19] != 4'hF) | (a_dx[18:0] == 19'd0))
+                                : (a_dx[22:19] != 4'h0);
+                c_val  = c_big ? {18'h3FFFF, a_soft} : c0[18:0];   // C43: |dx| <= 2^19-1
+                // u: RAMP 1-e; SOFT 2, 1, 0, 0 for pdiv[1:0] = 0..3
+                u      = a_soft ? (a_pdiv[1] ? 2'd0 : (a_pdiv[0] ? 2'd1 : 2'd2))
+                                : {1'b0, ~a_pdiv[0]};
                 // the braking law's correction for the velocity held between ramp ticks (C50)
                 a_h    <= a_be ? ({1'b0, a_amax[10:7]} + {4'd0, a_amax[6:0] != 7'd0}) : 5'd0;
                 a_sgn  <= dx_neg;
                 a_zero <= a_dx == 24'd0;
-                a_cv   <= cv_u;
+                a_cv   <= {2'b00, c_val} << u;
                 a_w    <= {1'b1, a_pmul};
                 acc    <= 29'd0;
             end
-            if (a_mul) begin
-                acc <= h2;
+            if (a_mul) begin : mul
+                reg [28:0] h1;
+                h1   = {acc[26:0], 2'b00} + (a_w[7] ? {7'd0, a_cv, 1'b0} : 29'd0);
+                acc <= h1 + (a_w[6] ? {8'd0, a_cv} : 29'd0);
                 a_w <= {a_w[5:0], 2'b00};
             end
         end
@@ -274,23 +274,25 @@ module tmc429_vtarget #(
     reg        b_use, b_sel;
     reg [11:0] b_vmaxz;
 
-    // clamp bounds at the load: lo = v_min (0 in VELOCITY_MODE), h only in RAMP_MODE
-    wire        l_vel  = a_rm == 2'd2;
-    wire [10:0] l_lo   = l_vel ? 11'd0 : a_vmin;
-    wire [4:0]  l_h    = (a_rm == 2'd0) ? a_h : 5'd0;
-    wire        l_neg  = l_vel ? a_vtg[11] : a_sgn;
-
-    // RAMP_MODE's root saturates from the load on (the running steps keep sticky), so that
-    // the clamp's selections are known there
-    wire        l_none = (a_rm == 2'd3) | (~a_rm[1] & a_zero);
-    wire        l_qsat = (a_rm == 2'd0) & st_l;
-    wire [11:0] l_vmax = l_neg ? 12'd0 - {1'b0, a_vmax} : {1'b0, a_vmax};
-
     always @(posedge clk) begin
         if (rst) begin
             b_vmin <= 12'd0; b_vmaxz <= 12'd0; b_use <= 1'b0; b_sel <= 1'b0;
             b_lo4 <= 14'd0; b_hi4 <= 14'd4; b_hk <= 15'd0; b_neg <= 1'b0;
-        end else if (run & b_load) begin
+        end else if (run & b_load) begin : bounds
+            reg        l_vel, l_neg, l_none, l_qsat;
+            reg [10:0] l_lo;
+            reg [4:0]  l_h;
+            reg [11:0] l_vmax;
+            // clamp bounds at the load: lo = v_min (0 in VELOCITY_MODE), h only in RAMP_MODE
+            l_vel  = a_rm == 2'd2;
+            l_lo   = l_vel ? 11'd0 : a_vmin;
+            l_h    = (a_rm == 2'd0) ? a_h : 5'd0;
+            l_neg  = l_vel ? a_vtg[11] : a_sgn;
+            // RAMP_MODE's root saturates from the load on (the running steps keep sticky), so
+            // that the clamp's selections are known there
+            l_none = (a_rm == 2'd3) | (~a_rm[1] & a_zero);
+            l_qsat = (a_rm == 2'd0) & st_l;
+            l_vmax = l_neg ? 12'd0 - {1'b0, a_vmax} : {1'b0, a_vmax};
             b_vmin <= l_neg ? 12'd0 - {1'b0, l_lo} : {1'b0, l_lo};
             b_vmaxz <= l_none ? 12'd0 : l_vmax;
             b_use <= ~l_none & ~l_qsat;
@@ -311,11 +313,6 @@ module tmc429_vtarget #(
     // q is a register in every mode (tmc429_vroot: SOFT_MODE and VELOCITY_MODE leave 4·mag
     // there), so that each comparison is one carry chain from flip-flops followed by the
     // selection alone
-    wire        below  = q < b_lo4;
-    wire        above  = q >= b_hi4;
-    /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits and the sign's copy
-    wire [14:0] q_h    = ({1'b0, q} ^ {15{b_neg}}) + b_hk;
-    /* verilator lint_on UNUSEDSIGNAL */
     // in the edge before the commit (c_pre) the comparisons are registered: the result is
     // (q - h) >> 2 when q lies between the bounds, else the bound (lo when below and
     // lo <= v_max, else v_max; two's complement), 0 with no target velocity
@@ -324,7 +321,14 @@ module tmc429_vtarget #(
     always @(posedge clk) begin
         if (rst) begin
             c_q <= 12'd0;  c_bnd <= 12'd0;  c_use <= 1'b0;
-        end else if (run & c_pre) begin
+        end else if (run & c_pre) begin : clamp
+            reg        below, above;
+            /* verilator lint_off UNUSEDSIGNAL */   // the two fraction bits and the sign's copy
+            reg [14:0] q_h;
+            /* verilator lint_on UNUSEDSIGNAL */
+            below  = q < b_lo4;
+            above  = q >= b_hi4;
+            q_h    = ({1'b0, q} ^ {15{b_neg}}) + b_hk;
             c_q   <= q_h[13:2];
             c_bnd <= (b_sel & below) ? b_vmin : b_vmaxz;
             c_use <= b_use & ~below & ~above;

@@ -159,13 +159,14 @@ fn lut_pins_replay_and_report_a_planted_fault() {
 }
 
 /// The reference search's pin-level ramp vectors (tmc429_ramp) in `dir`: their stem, their
-/// text and the number of lines of each motor. Word bits: _sentinel 251..248 | inputs 247..133 (rst 247, cond_tick
-/// 245, we 161, widx 160..157, wdata 156..133) | outputs 132..4 (x_actual 132..109, v 108..89,
-/// xeqt 18, stop 17) | _check 3..0.
+/// text and the number of lines of each motor. Word bits: _sentinel 255..252 | inputs 251..136 (rst 251,
+/// sample_tick 249, cond_tick 248, we 164, widx 163..160, wdata 159..136) | outputs 135..7
+/// (x_actual 135..112, v 111..92, xeqt 21, stop 20) | _check 6..0 (3 zero pad bits and the check
+/// digit).
 fn ramp_pins(dir: &std::path::Path) -> (std::path::PathBuf, String, usize) {
     export(dir, &["--unit", "ramp", "--scenario", "reference-search", "--format", "pins"]);
     let stem = dir.join("ramp-reference-search-tmc429");
-    assert_eq!(meta(&stem, "width"), "252");
+    assert_eq!(meta(&stem, "width"), "256");
     let hex = std::fs::read_to_string(stem.with_extension("hex")).unwrap();
     let cycles: usize = meta(&stem, "cycles").parse().unwrap();
     assert_eq!((hex.lines().count(), cycles % 3), (cycles, 0));
@@ -177,7 +178,7 @@ fn ramp_pins(dir: &std::path::Path) -> (std::path::PathBuf, String, usize) {
 fn after_switch_stop(m: &[&str]) -> usize {
     1 + m
         .windows(2)
-        .position(|w| word_field(w[0], 17, 1) == 1 && word_field(w[1], 17, 1) == 1 && word_field(w[1], 245, 1) == 1)
+        .position(|w| word_field(w[0], 20, 1) == 1 && word_field(w[1], 20, 1) == 1 && word_field(w[1], 248, 1) == 1)
         .expect("a switch stop")
 }
 
@@ -191,22 +192,27 @@ fn ramp_pins_of_the_reference_search() {
     let lines: Vec<&str> = hex.lines().collect();
     let field = word_field;
     for m in 0..3 {
-        assert_eq!(field(lines[m * per], 247, 1), 1, "motor {m} begins with its reset line");
-        assert_eq!(field(lines[m * per + 1], 247, 1), 0);
+        assert_eq!(field(lines[m * per], 251, 1), 1, "motor {m} begins with its reset line");
+        assert_eq!(field(lines[m * per + 1], 251, 1), 0);
     }
     let m0 = &lines[..per];
+    // sample_tick is the edge before the condition slot (C52): its line is followed by the
+    // slot's; motor 0's slot is phase 14 (C41), so line k (the k-th edge after reset, whose old
+    // state has the pre-divider at k - 1) takes the conditions when k mod 32 = 14
+    assert!(m0[1..].windows(2).all(|w| field(w[0], 249, 1) == field(w[1], 248, 1)));
+    assert!((1..per).all(|k| (field(m0[k], 249, 1) == 1) == (k % 32 == 14)));
     // V is 0 after the switch stop
     let s = after_switch_stop(m0);
-    assert_eq!(field(m0[s + 1], 89, 20), 0);
+    assert_eq!(field(m0[s + 1], 92, 20), 0);
     // the µC write x_actual := 0 (IDX 1) is executed in its edge
-    let z = m0.iter().position(|l| field(l, 161, 1) == 1 && field(l, 157, 4) == 1).expect("x_actual write");
+    let z = m0.iter().position(|l| field(l, 164, 1) == 1 && field(l, 160, 4) == 1).expect("x_actual write");
     assert!(z > s);
-    assert_eq!((field(m0[z], 133, 24), field(m0[z], 109, 24)), (0, 0));
+    assert_eq!((field(m0[z], 136, 24), field(m0[z], 112, 24)), (0, 0));
     // the move ends on x_target = 40 with V = 0
     let last = m0[per - 1];
-    assert_eq!((field(last, 109, 24), field(last, 89, 20), field(last, 18, 1)), (40, 0, 1));
+    assert_eq!((field(last, 112, 24), field(last, 92, 20), field(last, 21, 1)), (40, 0, 1));
     // motor 1 holds at 0 all along
-    assert!(lines[per..2 * per].iter().all(|l| field(l, 109, 24) == 0 && field(l, 89, 20) == 0));
+    assert!(lines[per..2 * per].iter().all(|l| field(l, 112, 24) == 0 && field(l, 92, 20) == 0));
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -221,11 +227,11 @@ fn ramp_pins_replay_and_report_a_planted_fault() {
     let out = replay(&vvp, &stem, None);
     assert_eq!(out.last().unwrap(), &format!("{} passed, 0 failed", lines.len()), "{out:?}");
 
-    // flip `stop` (word bit 17: bit 1 of digit 58) of the line after motor 0's switch stop in
-    // motor 1's lines, and the same bit of the check digit (62)
+    // flip `stop` (word bit 20: bit 0 of digit 58) of the line after motor 0's switch stop in
+    // motor 1's lines, and the same bit of the check digit (63)
     let k = per + after_switch_stop(&lines[..per]) + 1;
-    let was = word_field(lines[k], 17, 1);
-    let planted = plant(&dir, &lines, k, &[(58, 2), (62, 2)]);
+    let was = word_field(lines[k], 20, 1);
+    let planted = plant(&dir, &lines, k, &[(58, 1), (63, 1)]);
     let out = replay(&vvp, &stem, Some(&planted));
     assert_eq!(
         out[..2],

@@ -59,6 +59,7 @@ impl Tmc429 {
         };
         ramp::RampInputs {
             run: !self.power_down,
+            sample_tick: schedule::sample_tick(if self.power_down { self.prescaler } else { schedule::next(self.prescaler) }, m),
             cond_tick: schedule::cond_tick(self.prescaler, m),
             ramp_tick: schedule::ramp_tick(self.prescaler, m, mo.ramp_div),
             pulse_tick: schedule::pulse_tick(self.prescaler, m, mo.pulse_div),

@@ -129,6 +129,9 @@ pub fn switch_stop(x_actual: u32, v: i32, vt: i32, ref_conf: u8, dx_ref_toleranc
 pub struct RampInputs {
     /// The motion core runs (not powered down, C66).
     pub run: bool,
+    /// The next edge is the motor's condition slot: this edge takes the conditions the slot
+    /// applies (C52; phase 7·m + 13, or while powered down the slot's phase itself).
+    pub sample_tick: bool,
     /// The motor's condition slot, its commit phase 7·m + 14 of every frame (C41, C52, C61–C63).
     pub cond_tick: bool,
     /// The motor's ramp phase 7·m + 16 of a frame F with F mod 2^ramp_div = 2^ramp_div − 1 (C40,

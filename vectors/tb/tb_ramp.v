@@ -11,7 +11,7 @@
 
 module tb_ramp;
     parameter CHIP = 1;
-    localparam W_IN  = 115;
+    localparam W_IN  = 116;
     localparam W_OUT = 129;
     localparam UNIT  = "ramp";
 
@@ -26,14 +26,14 @@ module tb_ramp;
     // parameter RAM in every edge, so the operand edge takes it as the write's data), the
     // unit's V after that edge and its soft stop action
     tmc429_accel #(.NMOT(1)) accel (
-        .clk(clk), .rst(vin[114]), .ld({2'b00, vin_nx[111]}), .phase(5'd0),
+        .clk(clk), .rst(vin[115]), .ld({2'b00, vin_nx[111]}), .phase(5'd0),
         .v_hold({40'd0, v_hold}), .vt({24'd0, vin_nx[42:31]}),
         .stop_soft({2'b00, stop_soft}),
         .a_max_we(1'b1), .a_max_m(2'd0), .a_max_wd(vin_nx[72:62]),
         .v_rmp(v_rmp), .a_rmp(a_rmp), .mc_rmp(mc_rmp));
     tmc429_ramp #(.HAS_USTEP(CHIP != 0)) dut (
-        .clk(clk), .rst(vin[114]),
-        .run(vin[113]), .cond_tick(vin[112]), .ramp_tick(vin[111]), .pulse_tick(vin[110]), .rm(vin[109:108]),
+        .clk(clk), .rst(vin[115]),
+        .run(vin[114]), .sample_tick(vin[113]), .cond_tick(vin[112]), .ramp_tick(vin[111]), .pulse_tick(vin[110]), .rm(vin[109:108]),
         .x_target(vin[107:84]), .v_min(vin[83:73]), .ref_conf(vin[61:58]),
         .usrs(vin[57:55]), .tol_m1({1'b0, vin[54:43]} - 13'd1), .vt(vin[42:31]),
         .sw_l(vin[30]), .sw_r(vin[29]),

@@ -14,6 +14,7 @@ pub fn ramp_layout() -> Layout {
     Layout::new(vec![
         input("rst", 1),
         input("run", 1),
+        input("sample_tick", 1),
         input("cond_tick", 1),
         input("ramp_tick", 1),
         input("pulse_tick", 1),
@@ -49,11 +50,12 @@ pub fn ramp_layout() -> Layout {
 
 /// One line of the ramp unit: the inputs `i` of an edge and the outputs after it
 /// ([`ramp::ramp_ports`] of the motor state `m`).
-pub fn ramp_values(rst: bool, i: &ramp::RampInputs, m: &motor_regs::Motor) -> [u64; 32] {
+pub fn ramp_values(rst: bool, i: &ramp::RampInputs, m: &motor_regs::Motor) -> [u64; 33] {
     let o = ramp::ramp_ports(m, i);
     [
         rst as u64,
         i.run as u64,
+        i.sample_tick as u64,
         i.cond_tick as u64,
         i.ramp_tick as u64,
         i.pulse_tick as u64,
