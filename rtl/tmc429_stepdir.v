@@ -73,7 +73,7 @@ module tmc429_stepdir (
                     hi1 & (b[2:0] == 3'd5)};
         end
     endfunction
-    // bl = v for v = -1, 0, 1: backlog = v - dlt, e index v - dlt + 3
+    // the new backlog is v (v = -1, 0, 1) when backlog = v - dlt: e index v - dlt + 3
     function bl_is;
         input [6:0] ev;
         input [2:0] d;
