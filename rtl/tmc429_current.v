@@ -36,20 +36,22 @@ module tmc429_current (
     // Table 8-2: a_threshold > 1023 always selects is_aleat
     wire        agt   = ~a_threshold[10] & (a_actual[11] ? d_neg[11] : d_pos[11]);
 
+    // The tick loads both registers, its enable the registered tick alone: V != 0, the last
+    // input, selects between the next states of a moving and of a resting motor in front of
+    // them. Formed in the clocked block, only in the tick (docs/rtl.md, "Logic in its slot")
     always @(posedge clk) begin
         if (rst) begin
             v0_count <= 8'd0;
             sel      <= SEL_ALEAT;
-        end else if (tick) begin
-            if (v_nz) begin
-                v0_count <= 8'd0;
-                sel      <= agt ? SEL_AGTAT : SEL_ALEAT;
-            end else begin
-                if (v0_count != 8'd255)
-                    v0_count <= v0_count + 8'd1;
-                if (&v0_count[7:1])              // >= 254: the count reaches 255 now (or is there)
-                    sel <= (|is_agtat & |is_aleat) ? SEL_V0 : SEL_ALEAT;
-            end
+        end else if (tick) begin : at_tick
+            reg [7:0] cnt_rest;
+            reg [1:0] sel_rest, sel_mov;
+            cnt_rest = v0_count + {7'd0, ~&v0_count};     // counts up to 255 and stays there
+            sel_rest = ~&v0_count[7:1] ? sel             // below 254: the selection holds
+                     : ((|is_agtat & |is_aleat) ? SEL_V0 : SEL_ALEAT);
+            sel_mov  = agt ? SEL_AGTAT : SEL_ALEAT;
+            v0_count <= v_nz ? 8'd0 : cnt_rest;
+            sel      <= v_nz ? sel_mov : sel_rest;
         end
     end
 
