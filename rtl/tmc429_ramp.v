@@ -22,8 +22,9 @@
 //                  moves V toward T = 256*vt (0 while stop_soft) by at most a_max, shared by
 //                  the three motors; RAMP/SOFT: v_target := vt (C51)
 //   V := 0         while stop_hard; wins over the ramp tick (C3)
-//   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is one
-//                  step: x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := sign (C53)
+//   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is a step due
+//                  (step_due, with step_neg = sign(V)), made in the next edge with run = 1:
+//                  x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := step_neg (C53)
 // µC writes (we, widx, wdata; any run level) take priority over all of these (C3); register
 // indices and fields: rtl/tmc429_regmap.vh.
 `timescale 1ns / 1ps
@@ -91,6 +92,8 @@ module tmc429_ramp #(
     output wire        v_rnd
 );
     reg ref_prev;
+    reg step_due, step_neg;          // the pulse tick's carry and V's sign: the step made in
+                                     // the next edge with run = 1 (C53)
     reg stop_hard;                   // registered hard stop action (C52, C61)
     // the conditions of the edge before, which the condition slot applies (C52): the stop
     // actions and the latch (and the outputs c_stop, c_sel, c_tol)
@@ -186,10 +189,11 @@ module tmc429_ramp #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [10:0] p_sum = stop_hard ? acc : p_t[11:1];
     wire        p_step = pulse_tick & ~stop_hard & p_t[12];
-    // The step's sums are formed in the clocked block, only in an edge that steps (docs/rtl.md,
-    // "Logic in its slot"): a simulator evaluates them in no other edge. The carry out p_step
-    // stays one net (a LUT behind the carry chain that every enable of the step reads)
-    function [7:0] inc;              // +-2^(6-usrs) by the sign of V, usrs 7 as 6
+    // The carry out p_step is registered (step_due) and the step is made in the next edge
+    // (C53), so that no path runs from V through the accumulator's carry chain into the
+    // step's enables. The step's sums are formed in the clocked block, only in an edge that
+    // steps (docs/rtl.md, "Logic in its slot"): a simulator evaluates them in no other edge
+    function [7:0] inc;              // +-2^(6-usrs) by the sign of the step, usrs 7 as 6
         input       neg;
         input [2:0] rs;
         begin
@@ -227,6 +231,7 @@ module tmc429_ramp #(
             stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
             c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
             c_stop <= 1'b0;     c_tol <= 1'b0;
+            step_due <= 1'b0;   step_neg <= 1'b0;
         end else begin
             // the conditions are formed only in the edge that takes them (docs/rtl.md, "Logic
             // in its slot"): a simulator evaluates them in no other edge
@@ -257,13 +262,16 @@ module tmc429_ramp #(
                     if (~rm[1])
                         v_target <= vt;
                 end
-                step <= p_step;
+                step <= step_due;
+                step_due <= p_step;
+                if (p_step)
+                    step_neg <= v_neg;
                 if (pulse_tick)
                     acc <= p_sum;
-                if (p_step) begin
-                    x_actual <= x_actual + {{23{v_neg}}, 1'b1};
-                    ustep <= ustep + inc(v_neg, usrs);
-                    dir <= v_neg;
+                if (step_due) begin
+                    x_actual <= x_actual + {{23{step_neg}}, 1'b1};
+                    ustep <= ustep + inc(step_neg, usrs);
+                    dir <= step_neg;
                 end
             end
             v <= v_load ? v_rmp : v_hold;

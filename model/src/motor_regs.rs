@@ -83,6 +83,10 @@ pub struct Motor {
     pub vt_next: i32,
     /// Pulse accumulator (11 bit).
     pub acc: u16,
+    /// The pulse tick's carry: a step due, made in the next running edge (C53).
+    pub step_due: bool,
+    /// Its direction, the sign of V at the pulse tick (true = negative).
+    pub step_neg: bool,
     /// A step was made in the last cycle.
     pub step: bool,
     /// Direction of the last step (true = negative).
@@ -157,6 +161,8 @@ impl Motor {
             vt: 0,
             vt_next: 0,
             acc: 0,
+            step_due: false,
+            step_neg: false,
             step: false,
             dir: false,
             cond_prev: COND_RESET,

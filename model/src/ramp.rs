@@ -37,14 +37,21 @@ pub fn edge(m: &mut Motor, vt: i32, sample_tick: bool, cond_tick: bool, ramp_tic
     if stop_hard {
         m.v = 0;
     }
-    // Pulse tick (C53): velocity taken as 0 while the hard stop action holds.
+    // The step of the last pulse tick's carry (C53).
     m.step = false;
+    if m.step_due {
+        m.step_due = false;
+        m.do_step(m.step_neg);
+    }
+    // Pulse tick (C53): velocity taken as 0 while the hard stop action holds; a carry is a
+    // step due in the next running edge.
     if pulse_tick {
         let v_eff = if stop_hard { 0 } else { v_old };
         let sum = m.acc + (v_eff.unsigned_abs() >> 8) as u16;
         m.acc = sum & 0x7FF;
         if sum > 0x7FF {
-            m.do_step(v_eff < 0);
+            m.step_due = true;
+            m.step_neg = v_eff < 0;
         }
     }
     events

@@ -345,9 +345,10 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
 
-    /// The frame-level run equals the chip's motion cycle by cycle: x_actual and V at the
-    /// start of every frame it looks at, and the frame it stops in (any motor: the snapshots
-    /// are at phases 0, 7, 14, C41).
+    /// The frame-level run equals the chip's motion cycle by cycle: x_actual and V after the
+    /// first edge of every frame it looks at (motor 2's pulse tick is the frame's last phase,
+    /// its step is made in the next frame's first edge, C41, C53), and the frame it stops in
+    /// (any motor: the snapshots are at phases 0, 7, 14, C41).
     #[test]
     fn frames_equal_the_chip(motor in 0u8..3, pd in 0u8..=3, drd in -3i8..=5, v_max in 64u16..=2047, v_min in 0u16..=9, red in 0.01f32..=0.05, start in any::<i32>(), d in 1i32..=3000, neg in any::<bool>(), a in 0.0f64..=1.0) {
         let rd = (pd as i8 + drd).max(0) as u8;
@@ -377,7 +378,7 @@ proptest! {
         let idle = Inputs::default();
         let mut cycle = 0u64;
         for &(frame, x, v) in &trace {
-            while cycle < frame * 32 {
+            while cycle < frame * 32 + 1 {
                 chip.tick(&idle);
                 cycle += 1;
             }

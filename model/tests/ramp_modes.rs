@@ -85,7 +85,8 @@ fn soft_mode_ends_on_target() {
 }
 
 /// C52: the stop at target is evaluated in motor 0's condition slot (its commit phase 14) and
-/// registered. The step onto x_target (motor 0's pulse phase 17) leaves V as it is up to the
+/// registered. The step onto x_target (in the edge after motor 0's pulse phase 17, C53: phase
+/// 18) leaves V as it is up to the
 /// next frame's slot; the slot's edge sees the condition and sets stop_hard, V := 0 one edge
 /// later, and no further step follows (the next ramp and pulse ticks come after the slot).
 #[test]
@@ -104,12 +105,12 @@ fn stop_at_target_acts_from_the_condition_slot() {
     }
     let m = *c.motor(0);
     assert!(
-        m.step && c.probes().prescaler & 31 == tmc429_model::PHASE_PULSE[0] + 1,
-        "the step onto the target is made at motor 0's pulse phase"
+        m.step && c.probes().prescaler & 31 == tmc429_model::PHASE_PULSE[0] + 2,
+        "the step onto the target is made in the edge after motor 0's pulse phase (C53)"
     );
     assert!(m.v != 0 && m.v.unsigned_abs() >> 8 <= 2, "arrives at |v| <= v_min = 2, V moving: {}", m.v);
-    // phases 18..31 and 0..13 of the next frame: no slot of motor 0, nothing changes
-    for _ in (tmc429_model::PHASE_PULSE[0] + 1)..(32 + tmc429_model::PHASE_COMMIT[0]) {
+    // phases 19..31 and 0..13 of the next frame: no slot of motor 0, nothing changes
+    for _ in (tmc429_model::PHASE_PULSE[0] + 2)..(32 + tmc429_model::PHASE_COMMIT[0]) {
         c.tick(&idle);
         assert!(!c.motor(0).stop_hard);
         assert_eq!(c.motor(0).v, m.v, "V untouched before the slot");
@@ -125,4 +126,33 @@ fn stop_at_target_acts_from_the_condition_slot() {
         assert_eq!(c.motor(0).x_actual, 3_000);
         assert_eq!(c.motor(0).v, 0);
     }
+}
+
+/// C53: a pulse tick's carry is a step made in the next running edge, in the direction V had at
+/// the pulse tick and with the usrs of the step's own edge; the accumulator takes its new value
+/// in the pulse tick.
+#[test]
+fn the_step_is_made_in_the_edge_after_the_pulse_tick() {
+    use tmc429_model::{motor_regs::Motor, ramp};
+    let mut m = Motor::reset();
+    m.v = -(2047 << 8); // |V| >> 8 = 2047, moving negative
+    m.acc = 5; // 5 + 2047 = 2052: one carry, 4 left
+    m.ustep = 0x80;
+    // the pulse tick: the accumulator's new value, no step yet
+    ramp::edge(&mut m, 0, false, false, false, true, false, false);
+    assert_eq!(m.acc, 4);
+    assert!(!m.step);
+    assert_eq!((m.x_actual, m.ustep), (0, 0x80), "x_actual and ustep wait for the next edge");
+    // V turns positive and usrs changes before the next edge: the step keeps the pulse tick's
+    // direction and takes the new usrs (6: ±1)
+    m.v = 1000 << 8;
+    m.usrs = 6;
+    ramp::edge(&mut m, 0, false, false, false, false, false, false);
+    assert!(m.step && m.dir, "the step, negative");
+    assert_eq!(m.x_actual, 0xFF_FFFF);
+    assert_eq!(m.ustep, 0x7F);
+    // one step per carry: the edge after it makes none
+    ramp::edge(&mut m, 0, false, false, false, false, false, false);
+    assert!(!m.step);
+    assert_eq!((m.x_actual, m.ustep), (0xFF_FFFF, 0x7F));
 }
