@@ -8,8 +8,9 @@
 // registered soft stop action (set only in the motor's condition slot, phase 7m + 14, the
 // edge before that one), a_max with a µC write of that edge, and the committed target
 // vt (committed at phase 7m + 14, stable in that edge); T is registered with the soft stop
-// applied. So the tick's arithmetic starts at flip-flops; the motor's tmc429_ramp loads the
-// results in its ramp tick:
+// applied. So the tick's arithmetic starts at flip-flops; its results are registered in the
+// ramp tick (`tick`) and the motor's tmc429_ramp stores them in its next running edge (C51), so
+// that the sums end at this unit's flip-flops and no path runs from them into the three motors:
 //   T = 256 vt, or 0 while stop_soft; V moves toward T by at most a_max and lands on T when
 //   |T - V| <= a_max; a_rmp = the change of V; mc_rmp = the new V's v_mc (tmc429_ramp).
 // Range: |V|, |T| <= 2047*256, a_max <= 2047. V - T and V + a_max - T >= -2*2047*256 fit in
@@ -35,6 +36,7 @@ module tmc429_accel #(
     input  wire        rst,
     /* verilator lint_off UNUSEDSIGNAL */   // NMOT = 1: motor 0's operands alone
     input  wire [2:0]  ld,         // the next cycle is motor m's ramp phase (at most one)
+    input  wire [2:0]  tick,       // motor m's ramp tick is this edge's (0 while powered down)
     input  wire [4:0]  phase,      // prescaler[4:0]
     // per-motor operands after this edge, motor m in bits [w*(m+1)-1 : w*m]
     input  wire [59:0] v_hold,     // V unless its tick loads it, 1/256 units, two's complement
@@ -44,9 +46,10 @@ module tmc429_accel #(
     input  wire [1:0]  a_max_m,    // ... of this motor ...
     input  wire [10:0] a_max_wd,   // ... with this data, which holds in the edge after
     /* verilator lint_on UNUSEDSIGNAL */
-    output wire [19:0] v_rmp,      // V after the tick
-    output wire [11:0] a_rmp,      // a_actual after the tick
-    output wire        mc_rmp      // v_mc of v_rmp
+    // the results of the last ramp tick, registered in it
+    output reg  [19:0] v_rmp,      // V after the tick
+    output reg  [11:0] a_rmp,      // a_actual after the tick
+    output reg         mc_rmp      // v_mc of v_rmp
 );
     // ---- operands of the motor whose ramp tick is next ------------------------------------
     // t_hi = T / 256: vt, 0 while the soft stop acts; each motor's term is ld & ~stop_soft & vt
@@ -113,14 +116,21 @@ module tmc429_accel #(
             a_neg[i] = as[i] ^ (|(as & ((11'd1 << i) - 11'd1)));
         a_neg[11] = |as;
     end
-    assign v_rmp = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
+    wire [19:0] v_res = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
     // the change of V: d when landing, else the step
-    assign a_rmp = land ? d_lo : (up ? {1'b0, as} : a_neg);
+    wire [11:0] a_res = land ? d_lo : (up ? {1'b0, as} : a_neg);
     // v_mc of the new V (negative with low byte 0): from the sums' low bytes, which leave
     // their carry chains before the signs; landed on T = 256 vt, it is T's sign
     wire        mc_up = v_up[19] & (v_up[7:0] == 8'd0);
     wire        mc_dn = v_dn[19] & (v_dn[7:0] == 8'd0);
-    assign mc_rmp = land ? t_hi[11] : (up ? mc_up : mc_dn);
+    wire        mc_res = land ? t_hi[11] : (up ? mc_up : mc_dn);
+    always @(posedge clk) begin
+        if (rst) begin
+            v_rmp <= 20'd0;  a_rmp <= 12'd0;  mc_rmp <= 1'b0;
+        end else if (|tick[NMOT-1:0]) begin
+            v_rmp <= v_res;  a_rmp <= a_res;  mc_rmp <= mc_res;
+        end
+    end
 endmodule
 
 `default_nettype wire

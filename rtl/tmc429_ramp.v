@@ -18,11 +18,14 @@
 //   latch (C62)    lp & V_ACTUAL != 0 & selected switch changed since the last slot:
 //                  x_latched := x_actual (of the slot's old state), lp := 0
 // Per cycle with run = 1, from the old state:
-//   ramp tick      (ramp_tick, rm != HOLD) V, a_actual := the results of tmc429_accel, which
-//                  moves V toward T = 256*vt (0 while stop_soft) by at most a_max, shared by
-//                  the three motors; RAMP/SOFT: v_target := vt (C51)
-//   V := 0         while stop_hard; wins over the ramp tick (C3)
-//   pulse tick     (pulse_tick) acc += |V|>>8 (0 while stop_hard); a carry is a step due
+//   ramp tick      (ramp_tick, rm != HOLD) tmc429_accel, shared by the three motors, moves V
+//                  toward T = 256*vt (0 while stop_soft) by at most a_max and registers the
+//                  results, which V and a_actual store in the next edge with run = 1 (pend_v,
+//                  pend_a; V's not while stop_hard, and a µC write of V_ACTUAL in the tick or
+//                  after it voids it); RAMP/SOFT: v_target := vt (C51)
+//   V := 0         while stop_hard (C3)
+//   pulse tick     (pulse_tick) acc += |V|>>8 of the edge's V, with a tick's V stored in it
+//                  (0 while stop_hard); a carry is a step due
 //                  (step_due, with step_neg = sign(V)), made in the next edge with run = 1:
 //                  x_actual +-1, ustep +- 2^(6-usrs), step := 1, dir := step_neg (C53)
 // µC writes (we, widx, wdata; any run level) take priority over all of these (C3); register
@@ -52,7 +55,8 @@ module tmc429_ramp #(
     input  wire [11:0] vt,         // committed target velocity (tmc429_vtarget)
     input  wire        sw_l,       // left and right switch (C60)
     input  wire        sw_r,
-    // the ramp tick's results (tmc429_accel, from this motor's operands in its ramp tick)
+    // the last ramp tick's results (tmc429_accel, registered in the tick from this motor's
+    // operands; stored in the edge after this motor's tick)
     input  wire [19:0] v_rmp,
     input  wire [11:0] a_rmp,
     input  wire        mc_rmp,
@@ -92,6 +96,8 @@ module tmc429_ramp #(
     output wire        v_rnd
 );
     reg ref_prev;
+    reg pend_v, pend_a;              // the ramp tick's V and a_actual stored in the next edge
+                                     // with run = 1 (C51)
     reg step_due, step_neg;          // the pulse tick's carry and V's sign: the step made in
                                      // the next edge with run = 1 (C53)
     reg stop_hard;                   // registered hard stop action (C52, C61)
@@ -179,13 +185,18 @@ module tmc429_ramp #(
     wire        tick  = ramp_tick & (rm != 2'd3);
 
     // ---- pulse generator (C53) ----------------------------------------------------------------
+    // The edge's V: the tick's result stored in this edge (pend_v), else V. Its sign and
+    // magnitude bits, from flip-flops through one selection
+    wire        f_neg = pend_v ? v_rmp[19] : v_neg;
+    wire [10:0] f_mx  = pend_v ? (v_rmp[18:8] ^ {11{v_rmp[19]}}) : v_mx;
+    wire        f_mc  = pend_v ? mc_rmp : v_mc;
     // acc + (|V| >> 8): v_mc (a flip-flop) enters as the carry into bit 1 (bit 0 adds v_mc
     // and 1, its sum unused), so the step, the carry out, is one carry chain from
     // flip-flops; while stop_hard holds the sum is acc (no step). Not v_mc + v_mc in bit 0:
     // a carry cell with one net on both operands can keep nextpnr-ice40 0.4's router from
     // ever finishing (docs/rtl.md, "Checks"; scripts/carry-check)
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [12:0] p_t   = {1'b0, acc, v_mc} + {1'b0, v_mx, 1'b1};
+    wire [12:0] p_t   = {1'b0, acc, f_mc} + {1'b0, f_mx, 1'b1};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [10:0] p_sum = stop_hard ? acc : p_t[11:1];
     wire        p_step = pulse_tick & ~stop_hard & p_t[12];
@@ -215,13 +226,15 @@ module tmc429_ramp #(
     wire [11:0] w_v   = (wdata[`TMC429_F_V_ACTUAL] == 12'h800) ? 12'h801 : wdata[`TMC429_F_V_ACTUAL];
 
     // ---- V's next state (C3, C51, C61) ----------------------------------------------------
-    // the µC write wins; else stop_hard zeroes V; else the ramp tick loads the shared unit's
-    // result; else V holds. v_hold is that next state without the tick, so the tick's result
-    // enters V's input last (and the shared unit's operand register takes v_hold).
+    // the µC write wins; else stop_hard zeroes V; else a ramp tick's result due in this edge
+    // (pend_v, never with stop_hard) is stored; else V holds. v_hold is that next state without
+    // the stored result, so the registered result enters V's input last; the shared unit's
+    // operand register takes v_hold in the edge before the tick, which is never a motor's
+    // edge after its own tick.
     wire        zero_v  = run & stop_hard;
     assign v_hold       = w_va ? {w_v, 8'd0} : (zero_v ? 20'd0 : v);
     wire        mc_hold = w_va ? w_v[11] : (~zero_v & v_mc);
-    wire        v_load  = run & tick & ~stop_hard & ~w_va;
+    wire        v_load  = run & pend_v & ~w_va;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -232,6 +245,7 @@ module tmc429_ramp #(
             c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
             c_stop <= 1'b0;     c_tol <= 1'b0;
             step_due <= 1'b0;   step_neg <= 1'b0;
+            pend_v <= 1'b0;     pend_a <= 1'b0;
         end else begin
             // the conditions are formed only in the edge that takes them (docs/rtl.md, "Logic
             // in its slot"): a simulator evaluates them in no other edge
@@ -257,15 +271,15 @@ module tmc429_ramp #(
                         lp <= 1'b0;
                     end
                 end
-                if (tick) begin
+                pend_a <= tick;
+                if (pend_a)
                     a_actual <= a_rmp;
-                    if (~rm[1])
-                        v_target <= vt;
-                end
+                if (tick & ~rm[1])
+                    v_target <= vt;
                 step <= step_due;
                 step_due <= p_step;
                 if (p_step)
-                    step_neg <= v_neg;
+                    step_neg <= f_neg;
                 if (pulse_tick)
                     acc <= p_sum;
                 if (step_due) begin
@@ -276,6 +290,9 @@ module tmc429_ramp #(
             end
             v <= v_load ? v_rmp : v_hold;
             v_mc <= v_load ? mc_rmp : mc_hold;
+            // a µC write of V_ACTUAL wins over a tick's V: in the tick, and after it while
+            // powered down
+            pend_v <= ~w_va & (run ? tick & ~stop_hard : pend_v);
             if (w_x)  x_actual <= wdata[`TMC429_F_X_ACTUAL];
             if (w_vt) v_target <= wdata[`TMC429_F_V_TARGET];
             if (w_lp) lp <= 1'b1;

@@ -219,7 +219,7 @@ module tmc429_top #(
     // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
     // C51): its operands are registered in the edge into a motor's ramp phase
     tmc429_accel #(.NMOT(NMOT)) u_accel (
-        .clk(clk), .rst(rst), .ld(ramp_ld), .phase(prescaler[4:0]),
+        .clk(clk), .rst(rst), .ld(ramp_ld), .tick(rtick), .phase(prescaler[4:0]),
         .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft),
         .a_max_we(mot_we & (w_idx == `TMC429_IDX_A_MAX)), .a_max_m(mot_sel),
         .a_max_wd(w_data[`TMC429_F_A_MAX]),

@@ -83,6 +83,11 @@ pub struct Motor {
     pub vt_next: i32,
     /// Pulse accumulator (11 bit).
     pub acc: u16,
+    /// The last ramp tick's V, stored in the next running edge (C51); none when the tick's V
+    /// was not taken (the hard stop action held, or a µC write of V_ACTUAL won).
+    pub v_due: Option<i32>,
+    /// The last ramp tick's a_actual, stored in the next running edge (C51).
+    pub a_due: Option<i32>,
     /// The pulse tick's carry: a step due, made in the next running edge (C53).
     pub step_due: bool,
     /// Its direction, the sign of V at the pulse tick (true = negative).
@@ -161,6 +166,8 @@ impl Motor {
             vt: 0,
             vt_next: 0,
             acc: 0,
+            v_due: None,
+            a_due: None,
             step_due: false,
             step_neg: false,
             step: false,

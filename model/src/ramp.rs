@@ -10,8 +10,9 @@ use crate::motor_regs::*;
 /// the motor's condition slot (`sample_tick`) the conditions of the switch stop, stop at target,
 /// latch and interrupts are taken into registers ([`evaluate`]); in the slot (`cond_tick`, its
 /// commit phase, C41) they act ([`conditions`]; the interrupt events are returned, 0 outside the
-/// slot); the ramp tick (C51, with `ramp_tick` in any mode; HOLD_MODE makes none) and the pulse
-/// tick (C53) under the stop actions of the old state. `vt` is the committed target velocity of
+/// slot); the ramp tick (C51, with `ramp_tick` in any mode; HOLD_MODE makes none), whose V and
+/// a_actual are stored in the next running edge, and the pulse tick (C53) under the stop actions
+/// of the old state. `vt` is the committed target velocity of
 /// the old state (C41), `l` and `r` the motor's switches after mapping (C60). The ramp tick's
 /// arithmetic is [`accel::tick`] (`rtl/tmc429_accel.v`, shared by the three motors).
 #[inline]
@@ -25,11 +26,21 @@ pub fn edge(m: &mut Motor, vt: i32, sample_tick: bool, cond_tick: bool, ramp_tic
     if let Some(c) = sampled {
         m.cond_next = c;
     }
+    // The results of the last ramp tick are stored in the next running edge (C51).
+    if let Some(v) = m.v_due.take() {
+        m.v = v;
+    }
+    if let Some(a) = m.a_due.take() {
+        m.a_actual = a;
+    }
     if ramp_tick && m.rm != HOLD_MODE {
-        // The arithmetic is the unit shared by the motors' staggered ticks (C41).
+        // The arithmetic is the unit shared by the motors' staggered ticks (C41); its V is not
+        // taken while the hard stop action holds.
         let (v_new, a_actual) = accel::tick(v_old, vt, stop_soft, m.a_max);
-        m.a_actual = a_actual;
-        m.v = v_new;
+        m.a_due = Some(a_actual);
+        if !stop_hard {
+            m.v_due = Some(v_new);
+        }
         if m.rm <= SOFT_MODE {
             m.v_target = (vt as u32 & 0xFFF) as u16;
         }
@@ -43,10 +54,10 @@ pub fn edge(m: &mut Motor, vt: i32, sample_tick: bool, cond_tick: bool, ramp_tic
         m.step_due = false;
         m.do_step(m.step_neg);
     }
-    // Pulse tick (C53): velocity taken as 0 while the hard stop action holds; a carry is a
-    // step due in the next running edge.
+    // Pulse tick (C53): V of this edge, with a ramp tick's V stored in it; taken as 0 while the
+    // hard stop action holds. A carry is a step due in the next running edge.
     if pulse_tick {
-        let v_eff = if stop_hard { 0 } else { v_old };
+        let v_eff = if stop_hard { 0 } else { m.v };
         let sum = m.acc + (v_eff.unsigned_abs() >> 8) as u16;
         m.acc = sum & 0x7FF;
         if sum > 0x7FF {

@@ -307,6 +307,8 @@ fn motor_write(m: &mut Motor, i: u8, data: u32) {
             // C23: V := w·256, −2048 as −2047.
             let w = (f::V_ACTUAL.value(data) as i32).max(-2047);
             m.v = w * 256;
+            // the write wins over a ramp tick's V not yet stored (C3, C51)
+            m.v_due = None;
         }
         idx::A_MAX => m.a_max = f::A_MAX.get(data) as u16,
         idx::A_ACTUAL => {}

@@ -128,6 +128,33 @@ fn stop_at_target_acts_from_the_condition_slot() {
     }
 }
 
+/// C51: the ramp tick computes from the old state of its edge; its V and a_actual are stored in
+/// the next running edge, the pulse phase, whose pulse tick adds the new |V|>>8 (C53). While the
+/// hard stop action holds, a tick stores its a_actual and no V.
+#[test]
+fn the_ramp_ticks_results_are_stored_in_the_next_edge() {
+    use tmc429_model::{motor_regs::Motor, motor_regs::VELOCITY_MODE, ramp};
+    let mut m = Motor::reset();
+    m.rm = VELOCITY_MODE;
+    m.a_max = 1000;
+    // |V| >> 8 = 0
+    m.v = 255;
+    // the ramp tick toward vt = 100 (T = 25600): V + a_max = 1255 and a_actual 1000, not stored
+    ramp::edge(&mut m, 100, false, false, true, false, false, false);
+    assert_eq!((m.v, m.a_actual), (255, 0));
+    // the next edge stores them, and its pulse tick adds |1255| >> 8 = 4 (not 255 >> 8 = 0)
+    ramp::edge(&mut m, 100, false, false, false, true, false, false);
+    assert_eq!((m.v, m.a_actual, m.acc), (1255, 1000, 4));
+    // the hard stop action: V is 0 from the tick's edge on, the tick's a_actual (a_max 500) is
+    // stored in the next edge, its V (1755) is not
+    m.stop_hard = true;
+    m.a_max = 500;
+    ramp::edge(&mut m, 100, false, false, true, false, false, false);
+    assert_eq!((m.v, m.a_actual), (0, 1000));
+    ramp::edge(&mut m, 100, false, false, false, false, false, false);
+    assert_eq!((m.v, m.a_actual), (0, 500));
+}
+
 /// C53: a pulse tick's carry is a step made in the next running edge, in the direction V had at
 /// the pulse tick and with the usrs of the step's own edge; the accumulator takes its new value
 /// in the pulse tick.

@@ -142,8 +142,8 @@ proptest! {
                 // Slope a_max toward the target, landing exactly on it.
                 let expect = if prev < goal { (prev + a_max as i32).min(goal) } else { (prev - a_max as i32).max(goal) };
                 prop_assert_eq!(v, expect);
-                // Ramp ticks only.
-                prop_assert_eq!(c.probes().prescaler & 31, tmc429_model::PHASE_RAMP[0] + 1, "change outside motor 0's ramp phase");
+                // Ramp ticks only: V is stored in the edge after the tick's (C51).
+                prop_assert_eq!(c.probes().prescaler & 31, tmc429_model::PHASE_RAMP[0] + 2, "change outside the edge after motor 0's ramp phase");
             }
             prev = v;
         }

@@ -374,11 +374,11 @@ fn out_of_range_fields() {
     motion_setup(&mut h, 0, 15, 15, 0, 2047, 2047, 0, 2);
     wr(&mut h, 0, V_TARGET, 2047);
     // Motor 0's first ramp tick is at phase 16 of frame 2^15 − 1 (C40, C41): the edge with
-    // C = 2^20 − 16.
-    let before = (1u64 << 20) - 16 - h.cycle();
+    // C = 2^20 − 16; its V is stored in the next edge (C51).
+    let before = (1u64 << 20) - 15 - h.cycle();
     h.wait(before);
     assert_eq!(h.chip().motor(0).v, 0);
     h.wait(1);
-    assert_eq!(h.chip().motor(0).v, 2047, "one ramp tick of a_max after 2^20 − 15 CLK");
+    assert_eq!(h.chip().motor(0).v, 2047, "one ramp tick of a_max after 2^20 − 14 CLK");
     assert_eq!(h.chip().motor(0).x_actual, 0);
 }

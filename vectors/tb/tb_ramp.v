@@ -24,9 +24,11 @@ module tb_ramp;
     // the operands are registered in the edge before the ramp tick: the next line's ramp
     // tick, vt and a_max (a_max as it is after that edge's write: written into the unit's
     // parameter RAM in every edge, so the operand edge takes it as the write's data), the
-    // unit's V after that edge and its soft stop action
+    // unit's V after that edge and its soft stop action; the results are registered in the
+    // tick (a line with ramp_tick and run) and stored by the unit in its next running edge
     tmc429_accel #(.NMOT(1)) accel (
-        .clk(clk), .rst(vin[115]), .ld({2'b00, vin_nx[111]}), .phase(5'd0),
+        .clk(clk), .rst(vin[115]), .ld({2'b00, vin_nx[111]}), .tick({2'b00, vin[111] & vin[114]}),
+        .phase(5'd0),
         .v_hold({40'd0, v_hold}), .vt({24'd0, vin_nx[42:31]}),
         .stop_soft({2'b00, stop_soft}),
         .a_max_we(1'b1), .a_max_m(2'd0), .a_max_wd(vin_nx[72:62]),
