@@ -12,9 +12,9 @@ use crate::motor_regs::*;
 /// commit phase, C41) they act ([`conditions`]; the interrupt events are returned, 0 outside the
 /// slot); the ramp tick (C51, with `ramp_tick` in any mode; HOLD_MODE makes none), whose V and
 /// a_actual are stored in the next running edge, and the pulse tick (C53) under the stop actions
-/// of the old state. `vt` is the committed target velocity of
-/// the old state (C41), `l` and `r` the motor's switches after mapping (C60). The ramp tick's
-/// arithmetic is [`accel::tick`] (`rtl/tmc429_accel.v`, shared by the three motors).
+/// of the old state. `vt` is the committed target velocity of the old state (C41), `l` and `r`
+/// the motor's switches after mapping (C60). The ramp tick's arithmetic is [`accel::tick`]
+/// (`rtl/tmc429_accel.v`, shared by the three motors).
 #[inline]
 #[allow(clippy::too_many_arguments)]
 pub fn edge(m: &mut Motor, vt: i32, sample_tick: bool, cond_tick: bool, ramp_tick: bool, pulse_tick: bool, l: bool, r: bool) -> u8 {
