@@ -348,15 +348,27 @@ impl Chain {
     /// one edge left and no RAM read due (C80).
     #[inline]
     pub fn counting_only(&self) -> bool {
-        self.state != IDLE && (self.cnt > 4 || (self.cnt > 1 && !matches!(self.state, SETUP | HIGH | GAP)))
+        self.counting_edges() > 0
     }
 
-    /// The edge of a busy chain that only counts (fast path of `Tmc429::tick`; the caller has
-    /// checked [`Chain::counting_only`], SPI mode, no step, no counting ramp tick).
+    /// How many coming edges only count down: those before the state's last edge and, in a
+    /// state ahead of a bit, before its RAM reads (C80, cnt = 4 and 3); 0 while idle.
     #[inline]
-    pub fn count_down(&mut self) {
+    pub fn counting_edges(&self) -> u64 {
+        let last = if matches!(self.state, SETUP | HIGH | GAP) { 4 } else { 1 };
+        if self.state == IDLE {
+            0
+        } else {
+            u64::from(self.cnt.saturating_sub(last))
+        }
+    }
+
+    /// `n` edges of a busy chain that only count (fast path of `Tmc429::tick`; the caller has
+    /// checked [`Chain::counting_edges`], SPI mode, no step, no counting ramp tick).
+    #[inline]
+    pub fn count_down(&mut self, n: u16) {
         if self.state != IDLE {
-            self.cnt -= 1;
+            self.cnt -= n;
         }
     }
 

@@ -7,32 +7,50 @@ use crate::{chain, current, schedule, stepdir, sync, Chip, Tmc429};
 
 /// Driver side: microstep unit, current scaling, SPI chain and Step/Dir (C70–C99).
 impl Tmc429 {
-    /// The driver units would change nothing in this edge (part of the fast path of
-    /// [`Tmc429::tick`]): the chain idle without a request, no ramp tick that counts for the
-    /// continuous update or the current-scale selector, the Step/Dir unit idle.
+    /// How many coming edges the driver units stay quiet for as long as no ramp tick, step or
+    /// write comes: the chain idle without a request or counting down inside a state, the
+    /// Step/Dir unit's counters running (0: the coming edge has work; `u64::MAX`: no count ends
+    /// the quiet).
     #[inline]
-    pub(crate) fn drivers_quiet(&self) -> bool {
-        if self.chip != Chip::Tmc4210 {
+    pub(crate) fn drivers_quiet_edges(&self) -> u64 {
+        let chain = if self.chip == Chip::Tmc4210 {
+            u64::MAX
+        } else {
             let c = &self.chain;
             let spi = self.spi_mode();
-            let quiet = if c.state == chain::IDLE {
-                !c.req && !c.cs && c.stepped == 0 && !(self.global.cw && spi)
-            } else {
+            if c.state == chain::IDLE {
+                let busy = c.req || c.cs || c.stepped != 0 || (self.global.cw && spi);
+                if busy {
+                    0
+                } else {
+                    u64::MAX
+                }
+            } else if spi {
                 // Counting down inside a state: the edge only decrements (Chain::count_down).
-                spi && c.counting_only()
-            };
-            if !quiet {
-                return false;
+                c.counting_edges()
+            } else {
+                0
             }
-            if let Some(i) = schedule::lane_of(&schedule::PHASE_RAMP, schedule::phase(self.prescaler)) {
+        };
+        let sd = if self.chip == Chip::Tmc428 { u64::MAX } else { self.sd.quiet_edges(self.step_dir_mode(), self.run_edges + 1) };
+        chain.min(sd)
+    }
+
+    /// The coming edge is a ramp tick that the chain's continuous update or the current-scale
+    /// selector counts (C83, C75).
+    #[inline]
+    pub(crate) fn ramp_tick_drives(&self) -> bool {
+        if self.chip == Chip::Tmc4210 {
+            return false;
+        }
+        match schedule::lane_of(&schedule::PHASE_RAMP, schedule::phase(self.prescaler)) {
+            Some(i) => {
                 let cont = self.spi_mode() && self.global.g(f::CONT_UPDATE) != 0;
                 let (m, cs) = (&self.motors[i], &self.cur[i]);
-                if schedule::due(self.prescaler, m.ramp_div) && (cont || !cs.tick_changes_nothing(m)) {
-                    return false;
-                }
+                schedule::due(self.prescaler, m.ramp_div) && (cont || !cs.tick_changes_nothing(m))
             }
+            None => false,
         }
-        self.chip == Chip::Tmc428 || self.sd.quiet(self.step_dir_mode(), self.run_edges + 1)
     }
 
     /// Driver interface mode of the current state (C89, C91).

@@ -207,38 +207,79 @@ impl Tmc429 {
     pub fn tick_changes(&mut self, pins: u16) -> Option<Outputs> {
         // A package without REFR pins: the die sees their pull-ups (C90).
         let pins = pins | (self.bond.refr_absent as u16) << sync::bit::REFR1;
-        if self.idle_edge(pins) {
+        if self.idle_edges(pins) > 0 {
             self.cycle += 1;
             self.run_edges += 1;
             self.prescaler = schedule::next(self.prescaler);
-            self.chain.count_down();
+            self.chain.count_down(1);
             return None;
         }
         Some(self.full_tick(pins))
     }
 
+    /// Runs the edges of the fast path that come next with the input pins `pins`, at most
+    /// `max`, and returns how many it ran: the same as calling [`Tmc429::tick_changes`] until
+    /// it returns `Some` (that edge is not run) or `max` edges ran. For a run whose inputs hold
+    /// for many edges: the phases between two slots of the frame (C41) are run at once, as
+    /// far as the driver units' counters allow.
+    pub fn skip_quiet(&mut self, pins: u16, max: u64) -> u64 {
+        let pins = pins | (self.bond.refr_absent as u16) << sync::bit::REFR1;
+        let mut ran = 0;
+        while ran < max {
+            // This edge and those up to the next slot phase are the fast path's, as long as
+            // the drivers' counters keep them quiet.
+            let quiet = self.idle_edges(pins);
+            if quiet == 0 {
+                break;
+            }
+            let to_slot = u64::from(schedule::SLOT_PHASES.rotate_right(schedule::phase(self.prescaler) + 1).trailing_zeros()) + 1;
+            let n = to_slot.min(quiet).min(max - ran);
+            self.cycle += n;
+            self.run_edges += n;
+            self.prescaler = (self.prescaler + n as u32) & schedule::PRESCALER_MASK;
+            self.chain.count_down(n as u16);
+            ran += n;
+        }
+        ran
+    }
+
     /// Fast path, exactly equivalent to the full edge (tests/fast_path.rs): the pins are settled
-    /// in the synchronizers (no SPI edge in flight, no switch change), the motion core is quiet,
-    /// and this phase of the frame has nothing to do: no edge before a motor's condition slot that
-    /// takes other conditions than those it holds, no condition slot (C52, C61–C63: its commit
-    /// phase) whose conditions differ from those its last slot registered, no snapshot that
-    /// changes a target, no ramp tick, no pulse tick that adds to an accumulator.
-    /// Then the edge only advances the counters.
+    /// in the synchronizers (no SPI edge in flight, no switch change), the motion core is quiet
+    /// and has nothing to do in this phase of the frame ([`Tmc429::motion_idle`]), and so have
+    /// the driver units. Then the edge only advances the counters. Returns for how many edges
+    /// from this one on the driver units stay quiet ([`Tmc429::drivers_quiet_edges`]), 0 when
+    /// this edge is not one of the fast path's.
     #[inline]
-    fn idle_edge(&self, pins: u16) -> bool {
+    fn idle_edges(&self, pins: u16) -> u64 {
         if !(self.fast_path
             && self.quiet
             && !self.power_down
-            && self.drivers_quiet()
             && self.sync.settled()
             && pins == self.sync.s1
             && (self.sync.s2, self.global.mux_switches) == self.quiet_pins)
         {
-            return false;
+            return 0;
         }
+        let quiet = self.drivers_quiet_edges();
+        if quiet == 0 || self.ramp_tick_drives() || !self.motion_idle() {
+            return 0;
+        }
+        quiet
+    }
+
+    /// The motion core's edge at this phase of the frame changes nothing, given that the last
+    /// edge changed no motor and its inputs hold (`quiet`, `quiet_pins`): no edge before a
+    /// motor's condition slot that takes other conditions than those it holds, no condition
+    /// slot whose conditions differ from those its last slot registered, no snapshot that
+    /// changes a target, no ramp tick, no pulse tick that adds to an accumulator.
+    #[inline]
+    fn motion_idle(&self) -> bool {
         let c = self.prescaler;
-        let n = self.motor_count();
         let p = schedule::phase(c);
+        if schedule::SLOT_PHASES >> p & 1 == 0 {
+            return true;
+        }
+        let n = self.motor_count();
         let ramp = match schedule::lane_of(&PHASE_RAMP, p) {
             Some(i) if i < n => self.motors[i].rm == HOLD_MODE || !schedule::due(c, self.motors[i].ramp_div),
             _ => true,
@@ -288,7 +329,8 @@ impl Tmc429 {
             let phase = schedule::phase(self.prescaler);
             let event_phase = schedule::SLOT_PHASES >> phase & 1 != 0;
             let inputs = (pins, self.global.mux_switches);
-            if event_phase || !self.quiet || inputs != self.quiet_pins || !self.fast_path {
+            let held = self.quiet && inputs == self.quiet_pins && self.fast_path;
+            if !(held && (!event_phase || self.motion_idle())) {
                 let before = self.motors;
                 self.motion(pins, &mut events);
                 self.quiet = self.motors == before;

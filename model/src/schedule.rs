@@ -74,7 +74,16 @@ pub fn pulse_tick(c: u32, m: usize, pulse_div: u8) -> bool {
 /// The motor whose lane has `phase` as its slot in `lane` (one of the `PHASE_*` arrays).
 #[inline]
 pub fn lane_of(lane: &[u32; 3], phase: u32) -> Option<usize> {
-    lane.iter().position(|&p| p == phase)
+    // Three comparisons written out: with a constant lane they are three immediates.
+    if lane[0] == phase {
+        Some(0)
+    } else if lane[1] == phase {
+        Some(1)
+    } else if lane[2] == phase {
+        Some(2)
+    } else {
+        None
+    }
 }
 
 /// The ramp ticks of the edge of `c`, bit m = motor m (at most one motor per edge).

@@ -55,14 +55,17 @@ impl StepDir {
         StepDir::default()
     }
 
-    /// True when an edge without steps changes nothing (`enabled` = Step/Dir mode).
+    /// How many edges from edge `now` on change nothing as long as no step comes (`enabled` =
+    /// Step/Dir mode): 0 when edge `now` has work, `u64::MAX` when only a step or a change of
+    /// mode ends the quiet.
     #[inline]
-    /// `now`: index of the coming edge.
-    pub fn quiet(&self, enabled: bool, now: u64) -> bool {
-        if enabled {
-            self.busy == 0 || now < self.next
+    pub fn quiet_edges(&self, enabled: bool, now: u64) -> u64 {
+        if self.busy == 0 && (enabled || (self.step == [false; 3] && self.dir == [false; 3])) {
+            u64::MAX
+        } else if enabled {
+            self.next.saturating_sub(now)
         } else {
-            self.busy == 0 && self.step == [false; 3] && self.dir == [false; 3]
+            0
         }
     }
 

@@ -32,28 +32,7 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
     #[test]
     fn fast_path_is_exact(chip in prop::sample::select(Chip::ALL.to_vec()), ops in ops()) {
-        let trace: Arc<Mutex<Vec<(Inputs, Outputs, Probes)>>> = Arc::default();
-        let mut h = host(chip);
-        let t = trace.clone();
-        h.set_observer(Box::new(move |c: &Tmc429, i: &Inputs, o: &Outputs| t.lock().unwrap().push((*i, *o, c.probes()))));
-        // Moving axes to begin with.
-        let p = pmulpdiv::calc(500, 2, 1, 0.01).register_value().unwrap();
-        for m in 0..3 {
-            motion_setup(&mut h, m, 1, 2, 1, 1500, 500, p, 0);
-            wr(&mut h, m, X_TARGET, 3000 * (m as u32 + 1));
-        }
-        for op in &ops {
-            match *op {
-                Op::Write(m, i, d) => wr(&mut h, m, i, d),
-                Op::Wait(n) => h.wait(n),
-                Op::Refs(a, b, c) => {
-                    let p = h.pins_mut();
-                    p.ref1 = a;
-                    p.ref2 = b;
-                    p.ref3 = c;
-                }
-            }
-        }
+        let trace = motion_trace(chip, &ops);
         let mut slow = Tmc429::new(chip);
         slow.set_fast_path(false);
         // The same pins packed, through `tick_changes`: `None` only for an edge that changes no
@@ -61,7 +40,7 @@ proptest! {
         let mut packed = Tmc429::new(chip);
         let (mut last, mut last_probes) = (packed.outputs(), packed.probes());
         let mut quiet = 0;
-        for (n, (i, o, pr)) in trace.lock().unwrap().iter().enumerate() {
+        for (n, (i, o, pr)) in trace.iter().enumerate() {
             let so = slow.tick(i);
             prop_assert_eq!(so, *o, "outputs differ at cycle {}", n);
             prop_assert_eq!(slow.probes(), *pr, "probes differ at cycle {}", n);
@@ -80,8 +59,84 @@ proptest! {
             prop_assert_eq!(packed.probes(), *pr, "tick_changes probes differ at cycle {}", n);
             (last, last_probes) = (packed.outputs(), packed.probes());
         }
-        prop_assert!(quiet > 0, "no quiet edge in {} cycles", trace.lock().unwrap().len());
+        prop_assert!(quiet > 0, "no quiet edge in {} cycles", trace.len());
     }
+
+    /// `Tmc429::skip_quiet` runs exactly the edges for which `tick_changes` says `None`, up to
+    /// its limit, and leaves the chip as those edges one by one do.
+    #[test]
+    fn skip_quiet_runs_the_fast_paths_edges(chip in prop::sample::select(Chip::ALL.to_vec()), ops in ops()) {
+        let trace = motion_trace(chip, &ops);
+        let pins: Vec<u16> = trace.iter().map(|(i, _, _)| tmc429_model::sync::pack(i)).collect();
+        let mut one = Tmc429::new(chip);
+        let quiet: Vec<bool> = pins.iter().map(|&p| one.tick_changes(p).is_none()).collect();
+        let mut bulk = Tmc429::new(chip);
+        let mut n = 0;
+        while n < trace.len() {
+            // The pins hold for `held` edges; a limit that varies cuts some stretches short.
+            let held = pins[n..].iter().take_while(|&&p| p == pins[n]).count() as u64;
+            let max = held.min(1 + (n as u64 * 7919) % 61);
+            let run = quiet[n..].iter().take(max as usize).take_while(|&&q| q).count() as u64;
+            let ran = bulk.skip_quiet(pins[n], max);
+            prop_assert_eq!(ran, run, "edges run from cycle {}", n);
+            if ran == 0 {
+                bulk.tick_changes(pins[n]);
+                n += 1;
+            } else {
+                n += ran as usize;
+            }
+            let (_, o, pr) = &trace[n - 1];
+            prop_assert_eq!(bulk.outputs(), *o, "outputs differ at cycle {}", n - 1);
+            prop_assert_eq!(bulk.probes(), *pr, "probes differ at cycle {}", n - 1);
+            prop_assert_eq!(bulk.cycle(), n as u64);
+        }
+    }
+}
+
+/// A TMC4210 at rest in HOLD_MODE with its pins held has nothing to do in any edge (C41: no
+/// ramp tick in HOLD_MODE, no pulse tick adds at V = 0): `skip_quiet` runs every edge asked
+/// for, and the chip is then as after the same edges one by one.
+#[test]
+fn skip_quiet_runs_a_chip_at_rest() {
+    let mut h = host(Chip::Tmc4210);
+    wr(&mut h, 0, REF_CONF_RM, 3);
+    h.wait(100);
+    let pins = tmc429_model::sync::pack(h.pins_mut());
+    let (mut bulk, mut one) = (h.chip().clone(), h.chip().clone());
+    assert_eq!(bulk.skip_quiet(pins, 100_000), 100_000);
+    for _ in 0..100_000 {
+        assert_eq!(one.tick_changes(pins), None, "an edge at rest changes something at cycle {}", one.cycle());
+    }
+    assert_eq!((bulk.cycle(), bulk.probes(), bulk.outputs()), (one.cycle(), one.probes(), one.outputs()));
+}
+
+/// The chip's pins, outputs and probes in every cycle of a run that sets the three axes moving
+/// and then applies `ops`.
+fn motion_trace(chip: Chip, ops: &[Op]) -> Vec<(Inputs, Outputs, Probes)> {
+    let trace: Arc<Mutex<Vec<(Inputs, Outputs, Probes)>>> = Arc::default();
+    let mut h = host(chip);
+    let t = trace.clone();
+    h.set_observer(Box::new(move |c: &Tmc429, i: &Inputs, o: &Outputs| t.lock().unwrap().push((*i, *o, c.probes()))));
+    // Moving axes to begin with.
+    let p = pmulpdiv::calc(500, 2, 1, 0.01).register_value().unwrap();
+    for m in 0..3 {
+        motion_setup(&mut h, m, 1, 2, 1, 1500, 500, p, 0);
+        wr(&mut h, m, X_TARGET, 3000 * (m as u32 + 1));
+    }
+    for op in ops {
+        match *op {
+            Op::Write(m, i, d) => wr(&mut h, m, i, d),
+            Op::Wait(n) => h.wait(n),
+            Op::Refs(a, b, c) => {
+                let p = h.pins_mut();
+                p.ref1 = a;
+                p.ref2 = b;
+                p.ref3 = c;
+            }
+        }
+    }
+    drop(h);
+    Arc::try_unwrap(trace).unwrap().into_inner().unwrap()
 }
 
 /// The position-compare flag raises INT without touching the motors; the nINT pin follows one
