@@ -1,7 +1,9 @@
 //! Driver-chain SPI master at pin level (TMC428 §6.3, §9.1–§9.7, §11, Table 11-2;
 //! contract C80–C89). Datagrams are decoded from nSCS_S / SCK_S / SDO_S by the EventDecoder.
 
+mod common;
 mod drv;
+use common::replay_skip_quiet;
 use drv::*;
 use tmc429_model::regmap::{f, global_a7, motor_a7, ram_a7};
 use tmc429_model::Chip;
@@ -337,6 +339,7 @@ fn fast_path_exact_with_drivers() {
             assert_eq!(so, *o, "{chip}: outputs differ at cycle {n}");
             assert_eq!(slow.probes(), *pr, "{chip}: probes differ at cycle {n}");
         }
+        assert_eq!(replay_skip_quiet(chip, &trace.lock().unwrap()), Ok(()));
     }
 }
 

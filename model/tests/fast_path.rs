@@ -67,29 +67,7 @@ proptest! {
     #[test]
     fn skip_quiet_runs_the_fast_paths_edges(chip in prop::sample::select(Chip::ALL.to_vec()), ops in ops()) {
         let trace = motion_trace(chip, &ops);
-        let pins: Vec<u16> = trace.iter().map(|(i, _, _)| tmc429_model::sync::pack(i)).collect();
-        let mut one = Tmc429::new(chip);
-        let quiet: Vec<bool> = pins.iter().map(|&p| one.tick_changes(p).is_none()).collect();
-        let mut bulk = Tmc429::new(chip);
-        let mut n = 0;
-        while n < trace.len() {
-            // The pins hold for `held` edges; a limit that varies cuts some stretches short.
-            let held = pins[n..].iter().take_while(|&&p| p == pins[n]).count() as u64;
-            let max = held.min(1 + (n as u64 * 7919) % 61);
-            let run = quiet[n..].iter().take(max as usize).take_while(|&&q| q).count() as u64;
-            let ran = bulk.skip_quiet(pins[n], max);
-            prop_assert_eq!(ran, run, "edges run from cycle {}", n);
-            if ran == 0 {
-                bulk.tick_changes(pins[n]);
-                n += 1;
-            } else {
-                n += ran as usize;
-            }
-            let (_, o, pr) = &trace[n - 1];
-            prop_assert_eq!(bulk.outputs(), *o, "outputs differ at cycle {}", n - 1);
-            prop_assert_eq!(bulk.probes(), *pr, "probes differ at cycle {}", n - 1);
-            prop_assert_eq!(bulk.cycle(), n as u64);
-        }
+        prop_assert_eq!(replay_skip_quiet(chip, &trace), Ok(()));
     }
 }
 

@@ -53,3 +53,36 @@ pub fn motion_setup(h: &mut Host, m: u8, pulse_div: u32, ramp_div: u32, v_min: u
     wr(h, m, PMUL_PDIV, pmul_pdiv);
     wr(h, m, REF_CONF_RM, rm);
 }
+
+/// Replays the pins of `trace` (pins, outputs and probes of each cycle from reset) through
+/// `Tmc429::skip_quiet` where the pins hold, with limits that cut some stretches short, and
+/// through `tick_changes` elsewhere: the edges it runs must be exactly those `tick_changes`
+/// reports as quiet, and the chip after them as in the trace. The first difference, if any.
+pub fn replay_skip_quiet(chip: Chip, trace: &[(tmc429_model::Inputs, tmc429_model::Outputs, tmc429_model::Probes)]) -> Result<(), String> {
+    use tmc429_model::{sync, Tmc429};
+    let pins: Vec<u16> = trace.iter().map(|(i, _, _)| sync::pack(i)).collect();
+    let mut one = Tmc429::new(chip);
+    let quiet: Vec<bool> = pins.iter().map(|&p| one.tick_changes(p).is_none()).collect();
+    let mut bulk = Tmc429::new(chip);
+    let mut n = 0;
+    while n < trace.len() {
+        let held = pins[n..].iter().take_while(|&&p| p == pins[n]).count() as u64;
+        let max = held.min(1 + (n as u64 * 7919) % 61);
+        let run = quiet[n..].iter().take(max as usize).take_while(|&&q| q).count() as u64;
+        let ran = bulk.skip_quiet(pins[n], max);
+        if ran != run {
+            return Err(format!("{chip}: skip_quiet ran {ran} edges from cycle {n}, tick_changes has {run} quiet"));
+        }
+        if ran == 0 {
+            bulk.tick_changes(pins[n]);
+            n += 1;
+        } else {
+            n += ran as usize;
+        }
+        let (_, o, pr) = &trace[n - 1];
+        if bulk.outputs() != *o || bulk.probes() != *pr || bulk.cycle() != n as u64 {
+            return Err(format!("{chip}: outputs or probes differ at cycle {}", n - 1));
+        }
+    }
+    Ok(())
+}
