@@ -34,12 +34,13 @@ pub(crate) struct Sim {
     pub(crate) events_on: bool,
 }
 
-/// Installs a fresh pin-level decoder as the host's observer. The decoder lives in the closure;
-/// the shared queue is locked only when an event occurs, not at every edge.
+/// Installs a fresh pin-level decoder as the host's observer of the edges that may change a
+/// pin (the fast path's edges change none). The decoder lives in the closure; the shared queue
+/// is locked only when an event occurs, not at every edge.
 pub(crate) fn attach_decoder(host: &mut Host, queue: &SharedQueue) {
     let q = Arc::clone(queue);
     let mut dec = EventDecoder::new();
-    host.set_observer(Box::new(move |chip: &Tmc429, _inp, out| {
+    host.set_change_observer(Box::new(move |chip: &Tmc429, _inp, out| {
         dec.observe(chip, out, chip.cycle(), &mut |e| {
             let mut q = lock_queue(&q);
             if q.events.len() < TMC429_EVENT_QUEUE_CAPACITY as usize {

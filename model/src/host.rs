@@ -28,6 +28,8 @@ pub struct Host {
     sck_half: u32,
     last_out: Outputs,
     observer: Option<Observer>,
+    /// The observer watches only the edges that may change something ([`Host::set_change_observer`]).
+    changes_only: bool,
     /// Cycle index at which nSCS_C rose at the end of the last frame.
     last_frame_end: u64,
 }
@@ -40,7 +42,7 @@ impl Host {
     /// A host driving `c` (e.g. [`Tmc429::with_package`]).
     pub fn from_chip(c: Tmc429) -> Self {
         let last_out = c.outputs();
-        Host { chip: c, pins: Inputs::default(), sck_half: 4, last_out, observer: None, last_frame_end: 0 }
+        Host { chip: c, pins: Inputs::default(), sck_half: 4, last_out, observer: None, changes_only: false, last_frame_end: 0 }
     }
 
     /// CLK cycles per SCK_C half period (≥ [`MIN_SCK_HALF`]).
@@ -58,8 +60,19 @@ impl Host {
         self.sck_half
     }
 
+    /// `obs` is called after every edge.
     pub fn set_observer(&mut self, obs: Observer) {
         self.observer = Some(obs);
+        self.changes_only = false;
+    }
+
+    /// `obs` is called after the edges that may change something it sees; [`Host::wait`] runs
+    /// the fast path's edges, which change no pin, no INT and no register
+    /// ([`Tmc429::tick_changes`] `None`), at once without it. For a watcher of the pins such as
+    /// the [`crate::events::EventDecoder`].
+    pub fn set_change_observer(&mut self, obs: Observer) {
+        self.observer = Some(obs);
+        self.changes_only = true;
     }
 
     pub fn take_observer(&mut self) -> Option<Observer> {
@@ -113,22 +126,20 @@ impl Host {
 
     /// Advances `cycles` CLK edges with the pins as they are.
     pub fn wait(&mut self, cycles: u64) {
-        if self.observer.is_none() {
-            // The fast path's edges change no pin: they run at once (Tmc429::skip_quiet).
-            let pins = crate::sync::pack(&self.pins);
-            let mut left = cycles;
-            while left > 0 {
-                let skipped = self.chip.skip_quiet(pins, left);
-                if skipped == 0 {
-                    self.last_out = self.chip.tick_pins(pins);
-                    left -= 1;
-                } else {
-                    left -= skipped;
-                }
-            }
-        } else {
+        if self.observer.is_some() && !self.changes_only {
             for _ in 0..cycles {
                 self.tick();
+            }
+            return;
+        }
+        // The fast path's edges change no pin: they run at once (Tmc429::skip_quiet).
+        let pins = crate::sync::pack(&self.pins);
+        let mut left = cycles;
+        while left > 0 {
+            left -= self.chip.skip_quiet(pins, left);
+            if left > 0 {
+                self.tick();
+                left -= 1;
             }
         }
     }

@@ -235,7 +235,7 @@ pub fn run(host: &mut Host, script: &[Line], opts: RunOptions, out: &mut dyn Wri
         let q = queue.clone();
         let mut dec = EventDecoder::new();
         let prev = host.take_observer();
-        host.set_observer(Box::new(move |c, _i, o| {
+        host.set_change_observer(Box::new(move |c, _i, o| {
             dec.observe(c, o, c.cycle(), &mut |e| q.lock().unwrap().push(e));
         }));
         Some(prev)

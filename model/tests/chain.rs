@@ -343,6 +343,53 @@ fn fast_path_exact_with_drivers() {
     }
 }
 
+/// An observer of the edges that may change something (`Host::set_change_observer`, the C
+/// library's event queue) decodes the same pin events at the same cycles as one called after
+/// every edge: the edges `Host::wait` runs at once change no pin and no INT. Three axes moving
+/// with the chain sending datagrams (C83; not on the TMC4210), then in Step/Dir mode (C91; not
+/// on the TMC428).
+#[test]
+fn change_observer_decodes_the_events_of_every_edge() {
+    use std::sync::{Arc, Mutex};
+    use tmc429_model::events::{Event, EventDecoder};
+    use tmc429_model::host::Host;
+    for chip in [Chip::Tmc428, Chip::Tmc429, Chip::Tmc4210] {
+        let logs: [Arc<Mutex<Vec<Event>>>; 2] = Default::default();
+        let mut hosts = [Host::new(chip), Host::new(chip)];
+        for (k, h) in hosts.iter_mut().enumerate() {
+            let (log, mut dec) = (logs[k].clone(), EventDecoder::new());
+            let obs = Box::new(move |c: &tmc429_model::Tmc429, _: &tmc429_model::Inputs, o: &tmc429_model::Outputs| {
+                dec.observe(c, o, c.cycle(), &mut |e| log.lock().unwrap().push(e))
+            });
+            if k == 0 {
+                h.set_observer(obs);
+            } else {
+                h.set_change_observer(obs);
+            }
+            load_tables(h);
+            for m in 0..3u8 {
+                h.write(motor_a7(m, 12), 2 << 12 | (m as u32) << 8 | 5);
+                h.write(motor_a7(m, 3), 300);
+                h.write(motor_a7(m, 6), 50);
+                h.write(motor_a7(m, 10), 2);
+                h.write(motor_a7(m, 4), (200 - 150 * m as i32) as u32 & 0xFFF);
+            }
+            h.wait(300_000);
+            h.write(IF_CONF, f::EN_SD.put(1));
+            h.wait(200_000);
+        }
+        let [every, changes] = logs.map(|l| l.lock().unwrap().clone());
+        if chip != Chip::Tmc4210 {
+            assert!(every.iter().any(|e| matches!(e, Event::Chain { .. })), "{chip}: no datagram");
+        }
+        if chip != Chip::Tmc428 {
+            assert!(every.iter().any(|e| matches!(e, Event::Step { .. })), "{chip}: no step pulse");
+        }
+        assert_eq!(changes, every, "{chip}");
+        assert_eq!(hosts[0].chip().probes(), hosts[1].chip().probes(), "{chip}");
+    }
+}
+
 /// A chip with Table 11-2 and the sine LUT, LSMD 2, clk2_div 7, and a datagram requested by a
 /// cover write with cover_len 0 (the datagram goes out unchanged).
 fn chip_with_request() -> tmc429_model::Tmc429 {
