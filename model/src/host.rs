@@ -28,8 +28,11 @@ pub struct Host {
     sck_half: u32,
     last_out: Outputs,
     observer: Option<Observer>,
-    /// The observer watches only the edges that may change something ([`Host::set_change_observer`]).
+    /// The observer watches only the edges that may change something ([`Host::set_change_observer`])
+    /// once it has seen one edge.
     changes_only: bool,
+    /// The observer has seen an edge since it was set.
+    observed: bool,
     /// Cycle index at which nSCS_C rose at the end of the last frame.
     last_frame_end: u64,
 }
@@ -42,7 +45,16 @@ impl Host {
     /// A host driving `c` (e.g. [`Tmc429::with_package`]).
     pub fn from_chip(c: Tmc429) -> Self {
         let last_out = c.outputs();
-        Host { chip: c, pins: Inputs::default(), sck_half: 4, last_out, observer: None, changes_only: false, last_frame_end: 0 }
+        Host {
+            chip: c,
+            pins: Inputs::default(),
+            sck_half: 4,
+            last_out,
+            observer: None,
+            changes_only: false,
+            observed: false,
+            last_frame_end: 0,
+        }
     }
 
     /// CLK cycles per SCK_C half period (≥ [`MIN_SCK_HALF`]).
@@ -64,15 +76,18 @@ impl Host {
     pub fn set_observer(&mut self, obs: Observer) {
         self.observer = Some(obs);
         self.changes_only = false;
+        self.observed = false;
     }
 
-    /// `obs` is called after the edges that may change something it sees; [`Host::wait`] runs
-    /// the fast path's edges, which change no pin, no INT and no register
-    /// ([`Tmc429::tick_changes`] `None`), at once without it. For a watcher of the pins such as
-    /// the [`crate::events::EventDecoder`].
+    /// `obs` is called after the next edge and then after the edges that may change something
+    /// it sees; [`Host::wait`] runs the fast path's edges, which change no pin, no INT and no
+    /// register ([`Tmc429::tick_changes`] `None`), at once without it. For a watcher of the
+    /// pins such as the [`crate::events::EventDecoder`], which learns the levels at its first
+    /// edge.
     pub fn set_change_observer(&mut self, obs: Observer) {
         self.observer = Some(obs);
         self.changes_only = true;
+        self.observed = false;
     }
 
     pub fn take_observer(&mut self) -> Option<Observer> {
@@ -121,20 +136,22 @@ impl Host {
         self.last_out = self.chip.tick(&self.pins);
         if let Some(obs) = self.observer.as_mut() {
             obs(&self.chip, &self.pins, &self.last_out);
+            self.observed = true;
         }
     }
 
     /// Advances `cycles` CLK edges with the pins as they are.
     pub fn wait(&mut self, cycles: u64) {
-        if self.observer.is_some() && !self.changes_only {
-            for _ in 0..cycles {
+        let mut left = cycles;
+        if self.observer.is_some() && (!self.changes_only || !self.observed) {
+            let every = if self.changes_only { 1.min(left) } else { left };
+            for _ in 0..every {
                 self.tick();
             }
-            return;
+            left -= every;
         }
         // The fast path's edges change no pin: they run at once (Tmc429::skip_quiet).
         let pins = crate::sync::pack(&self.pins);
-        let mut left = cycles;
         while left > 0 {
             left -= self.chip.skip_quiet(pins, left);
             if left > 0 {
