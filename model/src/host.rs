@@ -134,6 +134,12 @@ impl Host {
     #[inline]
     fn tick(&mut self) {
         self.last_out = self.chip.tick(&self.pins);
+        self.observe();
+    }
+
+    /// The observer, if any, after an edge.
+    #[inline]
+    fn observe(&mut self) {
         if let Some(obs) = self.observer.as_mut() {
             obs(&self.chip, &self.pins, &self.last_out);
             self.observed = true;
@@ -142,20 +148,24 @@ impl Host {
 
     /// Advances `cycles` CLK edges with the pins as they are.
     pub fn wait(&mut self, cycles: u64) {
-        let mut left = cycles;
-        if self.observer.is_some() && (!self.changes_only || !self.observed) {
-            let every = if self.changes_only { 1.min(left) } else { left };
-            for _ in 0..every {
+        if self.observer.is_some() && !self.changes_only {
+            for _ in 0..cycles {
                 self.tick();
             }
-            left -= every;
+            return;
+        }
+        let mut left = cycles;
+        if self.observer.is_some() && !self.observed && left > 0 {
+            self.tick();
+            left -= 1;
         }
         // The fast path's edges change no pin: they run at once (Tmc429::skip_quiet).
         let pins = crate::sync::pack(&self.pins);
         while left > 0 {
             left -= self.chip.skip_quiet(pins, left);
             if left > 0 {
-                self.tick();
+                self.last_out = self.chip.tick_full(pins);
+                self.observe();
                 left -= 1;
             }
         }

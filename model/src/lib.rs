@@ -205,16 +205,21 @@ impl Tmc429 {
     /// events or gathers motor statistics can skip such an edge.
     #[inline]
     pub fn tick_changes(&mut self, pins: u16) -> Option<Outputs> {
-        // A package without REFR pins: the die sees their pull-ups (C90).
-        let pins = pins | (self.bond.refr_absent as u16) << sync::bit::REFR1;
+        let pins = self.die_pins(pins);
         if self.idle_edges(pins) > 0 {
-            self.cycle += 1;
-            self.run_edges += 1;
-            self.prescaler = schedule::next(self.prescaler);
-            self.chain.count_down(1);
+            self.advance_quiet(1);
             return None;
         }
         Some(self.full_tick(pins))
+    }
+
+    /// One rising edge like [`Tmc429::tick_pins`], without the fast path's test: for a caller
+    /// that has just seen [`Tmc429::skip_quiet`] stop before this edge, which then is not one of
+    /// the fast path's.
+    #[inline]
+    pub fn tick_full(&mut self, pins: u16) -> Outputs {
+        let pins = self.die_pins(pins);
+        self.full_tick(pins)
     }
 
     /// Runs the edges of the fast path that come next with the input pins `pins`, at most
@@ -223,7 +228,7 @@ impl Tmc429 {
     /// for many edges: the phases between two slots of the frame (C41) are run at once, as
     /// far as the driver units' counters allow.
     pub fn skip_quiet(&mut self, pins: u16, max: u64) -> u64 {
-        let pins = pins | (self.bond.refr_absent as u16) << sync::bit::REFR1;
+        let pins = self.die_pins(pins);
         let mut ran = 0;
         while ran < max {
             // This edge and those up to the next slot phase are the fast path's, as long as
@@ -234,13 +239,26 @@ impl Tmc429 {
             }
             let to_slot = u64::from(schedule::SLOT_PHASES.rotate_right(schedule::phase(self.prescaler) + 1).trailing_zeros()) + 1;
             let n = to_slot.min(quiet).min(max - ran);
-            self.cycle += n;
-            self.run_edges += n;
-            self.prescaler = (self.prescaler + n as u32) & schedule::PRESCALER_MASK;
-            self.chain.count_down(n as u16);
+            self.advance_quiet(n);
             ran += n;
         }
         ran
+    }
+
+    /// The pins as the die sees them: a package without REFR pins gives their pull-ups (C90).
+    #[inline]
+    fn die_pins(&self, pins: u16) -> u16 {
+        pins | (self.bond.refr_absent as u16) << sync::bit::REFR1
+    }
+
+    /// `n` edges of the fast path (at most up to the next slot phase and as far as the drivers'
+    /// counters allow, [`Tmc429::idle_edges`]): only the counters advance.
+    #[inline]
+    fn advance_quiet(&mut self, n: u64) {
+        self.cycle += n;
+        self.run_edges += n;
+        self.prescaler = (self.prescaler + n as u32) & schedule::PRESCALER_MASK;
+        self.chain.count_down(n as u16);
     }
 
     /// Fast path, exactly equivalent to the full edge (tests/fast_path.rs): the pins are settled
@@ -326,11 +344,11 @@ impl Tmc429 {
         if !self.power_down {
             self.run_edges += 1;
             pins_changed |= self.drivers(pins);
-            let phase = schedule::phase(self.prescaler);
-            let event_phase = schedule::SLOT_PHASES >> phase & 1 != 0;
             let inputs = (pins, self.global.mux_switches);
+            // Held inputs and no motor changed in the last edge: the motion core runs only in a
+            // slot phase with work (motion_idle is true outside the slot phases).
             let held = self.quiet && inputs == self.quiet_pins && self.fast_path;
-            if !(held && (!event_phase || self.motion_idle())) {
+            if !(held && self.motion_idle()) {
                 let before = self.motors;
                 self.motion(pins, &mut events);
                 self.quiet = self.motors == before;

@@ -198,10 +198,9 @@ impl Idle {
             let report = (*cycles | 0xFFFF) + 1;
             let skipped = m.skip_quiet(pins, (self.limit - 1).min(report) - *cycles);
             if skipped == 0 {
-                if let Some(o) = m.tick_changes(pins) {
-                    motor_stats(m, stats);
-                    decoder.observe(m, &o, *cycles + 1, &mut |e| count(e, datagrams, step_pulses));
-                }
+                let o = m.tick_full(pins);
+                motor_stats(m, stats);
+                decoder.observe(m, &o, *cycles + 1, &mut |e| count(e, datagrams, step_pulses));
                 *cycles += 1;
             } else {
                 *cycles += skipped;
