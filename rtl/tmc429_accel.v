@@ -52,27 +52,35 @@ module tmc429_accel #(
     output reg         mc_rmp      // v_mc of v_rmp
 );
     // ---- operands of the motor whose ramp tick is next ------------------------------------
-    // t_hi = T / 256: vt, 0 while the soft stop acts; each motor's term is ld & ~stop_soft & vt
-    reg  [19:0] vs_n, vs;
-    reg  [11:0] th_n, t_hi;
-    reg  [10:0] as;
-    generate
-        if (NMOT == 1) begin : one
-            always @(*) begin
-                vs_n = v_hold[19:0];
-                th_n = stop_soft[0] ? 12'd0 : vt[11:0];
-            end
-        end else begin : three
-            integer m;
-            always @(*) begin
-                vs_n = 20'd0;  th_n = 12'd0;
+    // t_hi = T / 256: vt, 0 while the soft stop acts; each motor's term is ld & ~stop_soft & vt.
+    // The operands and the tick's arithmetic below are formed in the clocked blocks, only in
+    // the edges that take them (docs/rtl.md, "Logic in its slot"): a simulator evaluates them
+    // in no other edge
+    function [31:0] operands;      // {V, vt or 0} of the motor whose ramp phase is next
+        input [2:0]  l;
+        input [59:0] vh;
+        input [35:0] vtg;
+        input [2:0]  ss;
+        reg   [19:0] v_o;
+        reg   [11:0] t_o;
+        integer      m;
+        begin
+            if (NMOT == 1) begin
+                v_o = vh[19:0];
+                t_o = ss[0] ? 12'd0 : vtg[11:0];
+            end else begin
+                v_o = 20'd0;  t_o = 12'd0;
                 for (m = 0; m < 3; m = m + 1) begin
-                    vs_n = vs_n | (v_hold[20*m +: 20] & {20{ld[m]}});
-                    th_n = th_n | (vt[12*m +: 12] & {12{ld[m] & ~stop_soft[m]}});
+                    v_o = v_o | (vh[20*m +: 20] & {20{l[m]}});
+                    t_o = t_o | (vtg[12*m +: 12] & {12{l[m] & ~ss[m]}});
                 end
             end
+            operands = {v_o, t_o};
         end
-    endgenerate
+    endfunction
+    reg  [19:0] vs;
+    reg  [11:0] t_hi;
+    reg  [10:0] as;
 
     // a_max's parameter RAM: the word of the motor whose ramp phase is at most two edges away
     wire [1:0]  am_ra;
@@ -81,54 +89,59 @@ module tmc429_accel #(
                   .R1(`TMC429_PH_RAMP(1) - 5'd2), .R2(`TMC429_PH_RAMP(2) - 5'd2)) u_amax (
         .clk(clk), .rst(rst), .phase(phase),
         .we(a_max_we), .wm(a_max_m), .wd(a_max_wd), .fd(a_max_wd), .ra(am_ra), .val(am_val));
-    // the operand is a_max after the operand edge: a write of the word read in this edge holds
-    wire        aw_now = a_max_we & (a_max_m == am_ra);
     always @(posedge clk) begin
         if (rst) begin
             vs <= 20'd0;  t_hi <= 12'd0;  as <= 11'd0;
-        end else if (|ld[NMOT-1:0]) begin
-            vs <= vs_n;  t_hi <= th_n;  as <= aw_now ? a_max_wd : am_val;
+        end else if (|ld[NMOT-1:0]) begin : load
+            // the operand is a_max after the operand edge: a write of the word read in this
+            // edge holds
+            reg aw_now;
+            aw_now = a_max_we & (a_max_m == am_ra);
+            {vs, t_hi} <= operands(ld, v_hold, vt, stop_soft);
+            as <= aw_now ? a_max_wd : am_val;
         end
     end
 
     // ---- V toward T (C51) -------------------------------------------------------------------
     // up = V < T; lands on T when V + a_max - T >= 0 and T + a_max - V >= 0: the step sums
     // V +- a_max (21 bits, no wrap-around) minus / from T, each one sign test; else V +- a_max.
-    wire [20:0] t_w   = {t_hi[11], t_hi, 8'd0};
-    wire [20:0] v_w   = {vs[19], vs};
-    wire [19:0] v_up  = vs + {9'd0, as};       // used only short of T: within +-2047*256
-    wire [19:0] v_dn  = vs - {9'd0, as};
-    /* verilator lint_off UNUSEDSIGNAL */     // only the signs are used
-    wire [20:0] s_vt  = v_w - t_w;                                      // V - T
-    wire [20:0] s_lo  = v_w + {10'd0, as} - t_w;                        // V + a_max - T
-    wire [20:0] s_hi  = t_w + {10'd0, as} - v_w;                        // T + a_max - V
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire        up    = s_vt[20];
-    wire        land  = ~s_lo[20] & ~s_hi[20];
-    wire [11:0] d_lo  = {t_hi[3:0], 8'd0} - vs[11:0];                   // T - V, bits 11..0
-    // -a_max without a carry chain (so that no adder is chained behind it): bit i is bit i of
-    // a_max inverted when a lower bit is 1 (two's complement: the bits above the lowest 1 flip)
-    reg  [11:0] a_neg;
-    integer i;
-    always @(*) begin
-        a_neg[0] = as[0];
-        for (i = 1; i < 11; i = i + 1)
-            a_neg[i] = as[i] ^ (|(as & ((11'd1 << i) - 11'd1)));
-        a_neg[11] = |as;
-    end
-    wire [19:0] v_res = land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
-    // the change of V: d when landing, else the step
-    wire [11:0] a_res = land ? d_lo : (up ? {1'b0, as} : a_neg);
-    // v_mc of the new V (negative with low byte 0): from the sums' low bytes, which leave
-    // their carry chains before the signs; landed on T = 256 vt, it is T's sign
-    wire        mc_up = v_up[19] & (v_up[7:0] == 8'd0);
-    wire        mc_dn = v_dn[19] & (v_dn[7:0] == 8'd0);
-    wire        mc_res = land ? t_hi[11] : (up ? mc_up : mc_dn);
+    // The change of V is d = T - V when landing, else the step; v_mc of the new V (negative
+    // with low byte 0) comes from the sums' low bytes, which leave their carry chains before
+    // the signs; landed on T = 256 vt, it is T's sign.
     always @(posedge clk) begin
         if (rst) begin
             v_rmp <= 20'd0;  a_rmp <= 12'd0;  mc_rmp <= 1'b0;
-        end else if (|tick[NMOT-1:0]) begin
-            v_rmp <= v_res;  a_rmp <= a_res;  mc_rmp <= mc_res;
+        end else if (|tick[NMOT-1:0]) begin : ramp_tick
+            reg [20:0] t_w, v_w;
+            reg [19:0] v_up, v_dn;
+            /* verilator lint_off UNUSEDSIGNAL */     // only the signs are used
+            reg [20:0] s_vt, s_lo, s_hi;
+            /* verilator lint_on UNUSEDSIGNAL */
+            reg        up, land, mc_up, mc_dn;
+            reg [11:0] d_lo, a_neg;
+            integer    i;
+            t_w   = {t_hi[11], t_hi, 8'd0};
+            v_w   = {vs[19], vs};
+            v_up  = vs + {9'd0, as};       // used only short of T: within +-2047*256
+            v_dn  = vs - {9'd0, as};
+            s_vt  = v_w - t_w;                                      // V - T
+            s_lo  = v_w + {10'd0, as} - t_w;                        // V + a_max - T
+            s_hi  = t_w + {10'd0, as} - v_w;                        // T + a_max - V
+            up    = s_vt[20];
+            land  = ~s_lo[20] & ~s_hi[20];
+            d_lo  = {t_hi[3:0], 8'd0} - vs[11:0];                   // T - V, bits 11..0
+            // -a_max without a carry chain (so that no adder is chained behind it): bit i is
+            // bit i of a_max inverted when a lower bit is 1 (two's complement: the bits above
+            // the lowest 1 flip)
+            a_neg[0] = as[0];
+            for (i = 1; i < 11; i = i + 1)
+                a_neg[i] = as[i] ^ (|(as & ((11'd1 << i) - 11'd1)));
+            a_neg[11] = |as;
+            mc_up = v_up[19] & (v_up[7:0] == 8'd0);
+            mc_dn = v_dn[19] & (v_dn[7:0] == 8'd0);
+            v_rmp  <= land ? {t_hi, 8'd0} : (up ? v_up : v_dn);
+            a_rmp  <= land ? d_lo : (up ? {1'b0, as} : a_neg);
+            mc_rmp <= land ? t_hi[11] : (up ? mc_up : mc_dn);
         end
     end
 endmodule

@@ -39,25 +39,29 @@ module tmc429_schedule (
     output wire [2:0]  ramp_ld       // the next edge is motor m's ramp phase, due or not
 );
     // the frame's count of trailing ones (0..15)
-    wire [14:0] frame = prescaler[19:5];
-    reg  [3:0]  ones_d;
-    integer k;
-    always @(*) begin
-        ones_d = 4'd15;
-        for (k = 14; k >= 0; k = k - 1)
-            if (!frame[k])
-                ones_d = k[3:0];
-    end
-    // the count registered: every tick falls at phase 2 or later (the schedule's test), so it
-    // is formed at least one edge after the frame changed and ones_q is the frame's count
-    // there; the priority encoder is not in the ticks' paths
+    function [3:0] ones_of;
+        input [14:0] f;
+        integer k;
+        begin
+            ones_of = 4'd15;
+            for (k = 14; k >= 0; k = k - 1)
+                if (!f[k])
+                    ones_of = k[3:0];
+        end
+    endfunction
+    // the count registered in each edge at phase 0, the first of the frame (the prescaler
+    // stands still while powered down, so the frame is the same there): every tick falls at
+    // phase 2 or later (the schedule's test), so ones_q is the frame's count there, and the
+    // priority encoder is not in the ticks' paths. Formed in the clocked block, only in that
+    // edge (docs/rtl.md, "Logic in its slot")
     reg  [3:0]  ones_q;
     always @(posedge clk) begin
         if (rst) begin
             ones_q <= 4'd0;
             prescaler <= 20'd0;
         end else begin
-            ones_q <= ones_d;
+            if (prescaler[4:0] == 5'd0)
+                ones_q <= ones_of(prescaler[19:5]);
             if (run)
                 prescaler <= prescaler + 20'd1;
         end

@@ -334,16 +334,17 @@ module tmc429_vtarget #(
             c_use <= b_use & ~below & ~above;
         end
     end
-    wire [11:0] res    = c_use ? c_q : c_bnd;
-
+    // the commit, formed in the clocked block only in a commit edge (docs/rtl.md, "Logic in
+    // its slot")
     reg [35:0] vt_r;
-    wire [35:0] present = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
-    wire [35:0] res_c   = {3{res}} & present;
+    localparam [35:0] PRESENT = (NMOT == 1) ? 36'h000000FFF : 36'hFFFFFFFFF;
     integer     k;
     always @(posedge clk) begin
         if (rst) begin
             vt_r <= 36'd0;
-        end else if (run) begin
+        end else if (run & (|c_out)) begin : commit
+            reg [35:0] res_c;
+            res_c = {3{c_use ? c_q : c_bnd}} & PRESENT;
             for (k = 0; k < 3; k = k + 1)
                 if (c_out[k])
                     vt_r[12*k +: 12] <= res_c[12*k +: 12];

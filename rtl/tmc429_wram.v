@@ -44,9 +44,12 @@ module tmc429_wram #(
             written <= {(1<<AW){1'b0}};
             wq <= 1'b0;
         end else begin
-            for (i = 0; i < (1<<AW); i = i + 1)
-                if (we && waddr == i[AW-1:0] && WMASK[i])
-                    written[i] <= 1'b1;
+            // the write enable tested once per edge, so that a simulator does not test it per
+            // word (docs/rtl.md, "Logic in its slot")
+            if (we)
+                for (i = 0; i < (1<<AW); i = i + 1)
+                    if (waddr == i[AW-1:0] && WMASK[i])
+                        written[i] <= 1'b1;
             if (re)
                 wq <= written[raddr];
         end
