@@ -29,6 +29,7 @@ module tmc429_regfile #(
     input  wire        frame_start,   // synchronized nSCS_C falling edge: wake-up (C66)
     input  wire [6:0]  rd_addr,
     input  wire [5:0]  rd_addr_q,     // the same address, stable one edge earlier (shadow RAM)
+    input  wire        rd_addr_new,   // rd_addr may differ from the edge before
     input  wire        rd_load,       // the SPI slave loads rd_data in this edge
     output reg  [23:0] rd_data,
     output wire        rd_round,      // rd_data's bits 11..0 are 1 more (v_actual's rounding, C42)
@@ -166,7 +167,9 @@ module tmc429_regfile #(
     // the read data is loaded at the 8th bit's rising SCK_C edge, two edges later at the
     // earliest (a synchronized SCK_C needs a low cycle between two rising edges): a decode
     // registered every edge is the address's at the loading edge, and the read multiplexer
-    // starts at flip-flops (one-hot selects, AND-OR).
+    // starts at flip-flops (one-hot selects, AND-OR). The decode is loaded only in the edges
+    // after the address may have changed (the same registers; a simulator evaluates it in no
+    // other edge: docs/rtl.md, "Logic in its slot").
     reg         rq_ram, rq_glb, rq_va;
     reg  [2:0]  rq_mot;
     reg  [23:0] rq_rst;
@@ -175,7 +178,7 @@ module tmc429_regfile #(
         if (rst) begin
             rq_ram <= 1'b0;  rq_glb <= 1'b0;  rq_va <= 1'b0;  rq_mot <= 3'd0;  rd_idx <= 16'd0;
             rq_rst <= 24'd0;
-        end else begin
+        end else if (rd_addr_new) begin
             rq_ram <= rd_addr[`TMC429_A7_RRS];
             rq_glb <= rd_addr[`TMC429_A7_SMDA] == `TMC429_SMDA_GLOBAL;
             for (j = 0; j < 3; j = j + 1)

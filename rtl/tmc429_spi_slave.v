@@ -27,6 +27,9 @@ module tmc429_spi_slave (
     // the same address (bits 5..0) from the edge after the 7th bit on: it is stable for at
     // least one edge before the read data is loaded, for a synchronous (block RAM) read
     output wire [5:0]  rd_addr_q,
+    // the input register shifted (or was reset) in the last edge: rd_addr may differ from
+    // the edge before (a user that registers a decode of it loads only after such an edge)
+    output reg         rd_addr_new,
     input  wire [23:0] rd_data,
     // the read value is rd_data plus 1 in bits 11..0 (v_actual of a negative V with a nonzero
     // low byte, C42): the register file's read multiplexer has no incrementer
@@ -109,28 +112,40 @@ module tmc429_spi_slave (
         end
     end
 
-    // the data's bits 11..0 sit at bits 18..7 after the load
-    wire [11:0] rnd_f  = out_sr[18:7] + 12'd1;
-    wire [31:0] out_rn = round_q ? {out_sr[31:19], rnd_f, out_sr[6:0]} : out_sr;
+    // the data's bits 11..0 sit at bits 18..7 after the load; the rounding is formed in the
+    // clocked block, only in the edge after a load that rounds (docs/rtl.md, "Logic in its
+    // slot")
+    function [31:0] rounded;
+        input [31:0] o;
+        input        r;
+        reg   [11:0] f;
+        begin
+            f       = o[18:7] + 12'd1;
+            rounded = r ? {o[31:19], f, o[6:0]} : o;
+        end
+    endfunction
     always @(posedge clk) begin
         if (rst) begin
             in_sr   <= 32'd0;
             out_sr  <= 32'd0;
             round_q <= 1'b0;
+            rd_addr_new <= 1'b1;
         end else if (nscs_fall) begin
             out_sr  <= {status, 24'd0};
             round_q <= 1'b0;
+            rd_addr_new <= 1'b0;
         end else begin
             if (sck_rise)
                 in_sr <= in_next;
+            rd_addr_new <= sck_rise;
             round_q <= rd_load & rd_round;
             if (rd_load)
                 // after 7 falling edges the reply's bit 23 sits at bit 30
                 out_sr <= {out_sr[31], rd_data, 7'd0};
             else if (sck_fall)
-                out_sr <= {out_rn[30:0], 1'b0};
-            else
-                out_sr <= out_rn;
+                out_sr <= rounded(out_sr, round_q) << 1;
+            else if (round_q)
+                out_sr <= rounded(out_sr, 1'b1);
         end
     end
 endmodule

@@ -83,6 +83,7 @@ module tmc429_top #(
     wire [7:0]  status;
     wire [6:0]  rd_addr;
     wire [5:0]  rd_addr_q;
+    wire        rd_addr_new;
     wire [23:0] rd_data;
     wire        rd_round;
     wire        frame_start, exec, exec_nx, active, sdo, rd_load;
@@ -92,8 +93,8 @@ module tmc429_top #(
     tmc429_spi_slave u_spi (
         .clk(clk), .rst(rst),
         .nscs_c(nscs_c), .sck_c(sck_c), .sdi_c(sdi_c),
-        .status(status), .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_data(rd_data), .rd_round(rd_round),
-        .rd_load(rd_load), .frame_start(frame_start), .exec(exec), .cmd(cmd),
+        .status(status), .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_addr_new(rd_addr_new), .rd_data(rd_data),
+        .rd_round(rd_round), .rd_load(rd_load), .frame_start(frame_start), .exec(exec), .cmd(cmd),
         .exec_nx(exec_nx), .addr_nx(addr_nx), .active(active), .sdo(sdo));
 
     // ---- register file (C20-C31, C64-C66) -------------------------------------------------
@@ -143,7 +144,7 @@ module tmc429_top #(
     tmc429_regfile #(.CHIP(CHIP)) u_regs (
         .clk(clk), .rst(rst),
         .exec(exec), .cmd(cmd), .exec_nx(exec_nx), .addr_nx(addr_nx), .frame_start(frame_start),
-        .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_load(rd_load), .rd_data(rd_data), .rd_round(rd_round),
+        .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_addr_new(rd_addr_new), .rd_load(rd_load), .rd_data(rd_data), .rd_round(rd_round),
         .mot_we(mot_we), .mot_sel(mot_sel), .ram_we(ram_we), .w_addr(w_addr), .w_idx(w_idx),
         .w_data(w_data), .rd_idx(rd_idx),
         .m_rdata(m_rdata), .m_xeqt(m_xeqt), .m_irq(m_irq),
