@@ -35,30 +35,37 @@ module tmc429_stepdir (
     reg [8:0]  cnt, cnt_n;
     reg [23:0] backlog;
 
-    wire [8:0]  t_step = {stpdiv + 5'd1, 4'd0};
     // The backlog after the motion core's step, b = backlog + s (s = +-1 or 0), is not formed:
     // its sign and b != 0 follow from backlog = 0, 1, -1, and the new backlog is one addition
     // backlog + s + t with t = -sign(b) when a STEP pulse starts (take), else 0.
-    wire        s_pos  = step_in & ~dir_in;
-    wire        s_neg  = step_in & dir_in;
     // backlog = 0, 1, -1 as registers formed with the next state: the new backlog is
     // backlog + dlt (dlt = -2..2), so it is v exactly when backlog = v - dlt, and the
     // comparisons of the backlog with -3..3 do not wait for the addition
     reg         b_z, b_p1, b_m1;
-    wire        neg    = s_pos ? (backlog[23] & ~b_m1)
-                                : (s_neg ? (backlog[23] | b_z) : backlog[23]);     // b < 0
-    wire        bl_nz  = ~(s_pos ? b_m1 : (s_neg ? b_p1 : b_z));                    // b != 0
     // hold = state != READY and cnt > 1, a register formed with the next state: a counting
     // state keeps it while cnt > 2, a pulse / space / DIR set-up starts with cnt = T >= 16
-    reg         hold;
-    wire        pend   = (state == PULSE) && !step_half;
-    wire        take   = ~hold & ~pend & bl_nz & (neg == dir);
-    // dlt = s + t: take needs neg == dir, so t = dir ? +1 : -1, and both sums are formed
-    // from flip-flops without an adder; take selects between them
-    wire [2:0]  s_d    = s_pos ? 3'd1 : (s_neg ? 3'd7 : 3'd0);
-    wire [2:0]  d_tk   = dir ? (s_pos ? 3'd2 : (s_neg ? 3'd0 : 3'd1))
-                             : (s_pos ? 3'd0 : (s_neg ? 3'd6 : 3'd7));
-    wire [2:0]  dlt    = take ? d_tk : s_d;                                         // -2..2
+    reg         hold, hold_n;
+    // b = backlog + s: {b != 0, b < 0}
+    function [1:0] b_of;
+        input       s_pos, s_neg, bl_neg, z, p1, m1;
+        begin
+            b_of = {~(s_pos ? m1 : (s_neg ? p1 : z)),
+                    s_pos ? (bl_neg & ~m1) : (s_neg ? (bl_neg | z) : bl_neg)};
+        end
+    endfunction
+    // the backlog's change, -2..2: dlt = s + t, where take needs b's sign = dir, so t = dir ?
+    // +1 : -1, and both sums are formed from flip-flops without an adder; take selects
+    // between them
+    function [2:0] dlt_of;
+        input       s_pos, s_neg, take, d;
+        begin
+            if (take)
+                dlt_of = d ? (s_pos ? 3'd2 : (s_neg ? 3'd0 : 3'd1))
+                           : (s_pos ? 3'd0 : (s_neg ? 3'd6 : 3'd7));
+            else
+                dlt_of = s_pos ? 3'd1 : (s_neg ? 3'd7 : 3'd0);
+        end
+    endfunction
     // backlog = 3 .. -3, one bit each (e[v + 3]); the backlog's next state and these
     // comparisons are formed only where the unit runs in Step/Dir mode (the clocked block
     // below), so that a simulator evaluates them only there (docs/rtl.md, "Logic in its slot")
@@ -90,24 +97,35 @@ module tmc429_stepdir (
         end
     endfunction
 
-    // cnt > 2 as a bit test (a bit above bit 1 set, or 3): LUTs, where `>` with a constant
-    // is a carry chain in synthesis (Yosys' synth_ice40)
-    wire        cnt_gt2 = (|cnt[8:2]) | (&cnt[1:0]);
-    wire        hold_n = ~run ? hold
-                       : (~en ? 1'b0 : (hold ? cnt_gt2 : (pend | bl_nz)));
-
+    // The next state; the decisions are formed only where the unit runs in Step/Dir mode, so
+    // that a simulator evaluates them in no other edge (docs/rtl.md, "Logic in its slot")
+    reg        s_pos, s_neg, neg, bl_nz, pend, cnt_gt2;
+    reg  [8:0] t_step;
     always @(*) begin
         state_n   = state;
         cnt_n     = cnt;
         step_n    = step;
         dir_n     = dir;
+        hold_n    = hold;
+        {s_pos, s_neg, neg, bl_nz, pend, cnt_gt2} = 6'd0;
+        t_step    = 9'd0;
         if (run) begin
             if (!en) begin
                 state_n   = READY;
                 cnt_n     = 9'd0;
                 step_n    = 1'b0;
                 dir_n     = 1'b0;
+                hold_n    = 1'b0;
             end else begin
+                t_step = {stpdiv + 5'd1, 4'd0};
+                s_pos  = step_in & ~dir_in;
+                s_neg  = step_in & dir_in;
+                {bl_nz, neg} = b_of(s_pos, s_neg, backlog[23], b_z, b_p1, b_m1);
+                pend   = (state == PULSE) && !step_half;
+                // cnt > 2 as a bit test (a bit above bit 1 set, or 3): LUTs, where `>` with a
+                // constant is a carry chain in synthesis (Yosys' synth_ice40)
+                cnt_gt2 = (|cnt[8:2]) | (&cnt[1:0]);
+                hold_n  = hold ? cnt_gt2 : (pend | bl_nz);
                 if (hold) begin
                     cnt_n = cnt - 9'd1;
                 end else if (pend) begin
@@ -146,7 +164,17 @@ module tmc429_stepdir (
             state   <= state_n;
             cnt     <= cnt_n;
             hold    <= hold_n;
-            if (run & en) begin
+            if (run & en) begin : backlog_nx
+                // the same decision as the next state's above (a STEP pulse starts: take),
+                // formed here only in Step/Dir mode, so that the backlog's sum does not wait
+                // for run and en
+                reg       sp, sn, nz, ng, tk;
+                reg [2:0] dlt;
+                sp  = step_in & ~dir_in;
+                sn  = step_in & dir_in;
+                {nz, ng} = b_of(sp, sn, backlog[23], b_z, b_p1, b_m1);
+                tk  = ~hold & ~((state == PULSE) && !step_half) & nz & (ng == dir);
+                dlt = dlt_of(sp, sn, tk, dir);
                 backlog <= backlog + {{21{dlt[2]}}, dlt};
                 b_z  <= bl_is(near(backlog), dlt, 0);
                 b_p1 <= bl_is(near(backlog), dlt, 1);
