@@ -60,7 +60,7 @@ module tmc429_schedule (
             ones_q <= 4'd0;
             prescaler <= 20'd0;
         end else begin
-            if (prescaler[4:0] == 5'd0)
+            if (~|prescaler[4:0])        // the frame's first phase (C40: F = C >> 5)
                 ones_q <= ones_of(prescaler[19:5]);
             if (run)
                 prescaler <= prescaler + 20'd1;
