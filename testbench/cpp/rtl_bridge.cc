@@ -21,6 +21,7 @@
 #include "Vtmc429_4210___024root.h"
 #include "Vtmc429_429_bug_status___024root.h"
 #endif
+#include "tmc429-testbench/cpp/vl_pins.h"
 
 namespace tmc429tb {
 namespace {
@@ -57,19 +58,7 @@ public:
     RtlSimImpl() : ctx_(new VerilatedContext) {
         ctx_->traceEverOn(kTrace);
         top_.reset(new V(ctx_.get(), "rtl"));
-        V &t = *top_;
-        t.nscs_c = 1;
-        t.sck_c = 1;
-        t.sdi_c = 0;
-        t.sdi_s = 0;
-        t.ref1 = t.ref2 = t.ref3 = 0;
-        t.refr1 = t.refr2 = t.refr3 = 1;
-        t.rst = 1;
-        t.clk = 0;
-        t.eval();
-        t.clk = 1;
-        t.eval();
-        t.rst = 0;
+        reset_edge(*top_);
     }
     ~RtlSimImpl() override {
         trace_close();
@@ -110,30 +99,13 @@ private:
     // One rising CLK edge with the inputs `in`.
     void edge(const RtlInputs &in) {
         V &t = *top_;
-        t.clk = 0;
-        t.nscs_c = in.nscs_c;
-        t.sck_c = in.sck_c;
-        t.sdi_c = in.sdi_c;
-        t.sdi_s = in.sdi_s;
-        t.ref1 = in.ref1;
-        t.ref2 = in.ref2;
-        t.ref3 = in.ref3;
-        t.refr1 = in.refr1;
-        t.refr2 = in.refr2;
-        t.refr3 = in.refr3;
+        set_inputs(t, in);
         if constexpr (kTrace) {
+            t.clk = 0;
             t.eval();
             if (tfp_) tfp_->dump(cycle_ * period_ + period_ / 2);
         } else {
-#if TMC429_VL_TRIGRPREV
-            // The falling edge without an eval: nothing in rtl/ acts on the falling edge of
-            // clk, so the eval at clk = 0 would only record the clock level for Verilator's
-            // edge detection; set it directly (the eval at clk = 1 settles whatever the new
-            // inputs drive before the edge's flops take them, as an eval at clk = 0 would).
-            t.rootp->__Vtrigrprev__TOP__clk = 0;
-#else
-            t.eval();
-#endif
+            falling_edge(t);
         }
         t.clk = 1;
         t.eval();

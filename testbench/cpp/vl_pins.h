@@ -1,0 +1,56 @@
+// How a Verilated tmc429_top is driven, shared by the bridge (rtl_bridge.cc) and the training
+// run of the profile-guided build (pgo_train.cc, build/pgo.rs): the reset edge, the inputs of
+// an edge and the falling CLK edge.
+#pragma once
+
+namespace tmc429tb {
+
+// The reset state, as tmc429_model::Tmc429::new makes it: idle pins (nSCS_C = SCK_C = 1,
+// switches open, REFR pulled up), then one CLK edge with rst = 1.
+template <class V>
+void reset_edge(V &t) {
+    t.nscs_c = 1;
+    t.sck_c = 1;
+    t.sdi_c = 0;
+    t.sdi_s = 0;
+    t.ref1 = t.ref2 = t.ref3 = 0;
+    t.refr1 = t.refr2 = t.refr3 = 1;
+    t.rst = 1;
+    t.clk = 0;
+    t.eval();
+    t.clk = 1;
+    t.eval();
+    t.rst = 0;
+}
+
+// The input pins of the next edge, from any struct with their fields.
+template <class V, class In>
+void set_inputs(V &t, const In &in) {
+    t.nscs_c = in.nscs_c;
+    t.sck_c = in.sck_c;
+    t.sdi_c = in.sdi_c;
+    t.sdi_s = in.sdi_s;
+    t.ref1 = in.ref1;
+    t.ref2 = in.ref2;
+    t.ref3 = in.ref3;
+    t.refr1 = in.refr1;
+    t.refr2 = in.refr2;
+    t.refr3 = in.refr3;
+}
+
+// The falling CLK edge of a model built without trace. With TMC429_VL_TRIGRPREV (Verilator
+// 5.006) without an eval: nothing in rtl/ acts on the falling edge of clk, so the eval at
+// clk = 0 would only record the clock level for Verilator's edge detection; it is set directly
+// (the eval at clk = 1 settles whatever the new inputs drive before the edge's flops take
+// them, as an eval at clk = 0 would).
+template <class V>
+void falling_edge(V &t) {
+    t.clk = 0;
+#if TMC429_VL_TRIGRPREV
+    t.rootp->__Vtrigrprev__TOP__clk = 0;
+#else
+    t.eval();
+#endif
+}
+
+}  // namespace tmc429tb
