@@ -3,12 +3,12 @@
 //!
 //! clang compiles the untraced models of the three variants with `-fprofile-instr-generate`
 //! and links them with cpp/pgo_train.cc; the training run replays the golden pin-level vectors
-//! of each variant (vectors/golden, every set whose .meta says `unit chip`: registers, the
-//! chip's pins, reference search) on them, and `llvm-profdata` merges the counts. The models
-//! are then compiled with `-fprofile-instr-use` of that profile: clang lays out the one large
-//! function Verilator makes of each model's edge by how often each branch was taken, which
-//! makes the edge about 10 % faster. The profile only guides the compiler: the code computes
-//! the same, whatever the training ran.
+//! of each variant (vectors/golden, every set whose .meta says `unit chip`: registers,
+//! chip-hold, reference search, the datasheet's example) on them, and `llvm-profdata` merges
+//! the counts. The models are then compiled with `-fprofile-instr-use` of that profile: clang
+//! lays out the one large function Verilator makes of each model's edge by how often each
+//! branch was taken, which makes the edge about 10 % faster. The profile only guides the
+//! compiler: the code computes the same, whatever the training ran.
 //!
 //! No profile (a cargo warning says why, and the models are compiled as before) when the
 //! compiler is not clang, when no `llvm-profdata` of clang's version runs, or when a step of
