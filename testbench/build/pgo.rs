@@ -56,8 +56,9 @@ pub fn profile(t: &Training) -> Option<Profile> {
     if env::var("TMC429_VL_PGO").is_ok_and(|v| v == "0") {
         return None;
     }
-    match make(t) {
-        Ok(path) => Some(Profile { path, sources: TRAINED.iter().flat_map(|(prefix, _, _)| (t.sources)(prefix)).collect() }),
+    let sources: Vec<PathBuf> = TRAINED.iter().flat_map(|(prefix, _, _)| (t.sources)(prefix)).collect();
+    match make(t, &sources) {
+        Ok(path) => Some(Profile { path, sources }),
         Err(why) => {
             println!(
                 "cargo:warning=the Verilated RTL is compiled without a profile ({why}): about 10 % slower \
@@ -68,7 +69,8 @@ pub fn profile(t: &Training) -> Option<Profile> {
     }
 }
 
-fn make(t: &Training) -> Result<PathBuf, String> {
+/// The merged profile of the training run on the models compiled from `sources`.
+fn make(t: &Training, sources: &[PathBuf]) -> Result<PathBuf, String> {
     let profdata = llvm_profdata(t.cxx)?;
     let dir = t.mdir.with_file_name("pgo");
     let _ = fs::remove_dir_all(&dir);
@@ -84,7 +86,7 @@ fn make(t: &Training) -> Result<PathBuf, String> {
         args.push(code.to_string());
         args.push(pins.display().to_string());
     }
-    let exe = instrumented_trainer(t, &dir)?;
+    let exe = instrumented_trainer(t, sources, &dir)?;
     let raw = dir.join("train.profraw");
     run(Command::new(&exe).args(&args).env("LLVM_PROFILE_FILE", &raw), "the training run")?;
     let merged = dir.join("rtl.profdata");
@@ -92,16 +94,12 @@ fn make(t: &Training) -> Result<PathBuf, String> {
     Ok(merged)
 }
 
-/// The trained models, Verilator's runtime and cpp/pgo_train.cc compiled with
+/// The trained models (`sources`), Verilator's runtime and cpp/pgo_train.cc compiled with
 /// `-fprofile-instr-generate` into `dir/obj`, linked as `dir/pgo_train`.
-fn instrumented_trainer(t: &Training, dir: &Path) -> Result<PathBuf, String> {
+fn instrumented_trainer(t: &Training, sources: &[PathBuf], dir: &Path) -> Result<PathBuf, String> {
     println!("cargo:rerun-if-changed=cpp/pgo_train.cc");
-    println!("cargo:rerun-if-changed=cpp/vl_pins.h");
     let mut b = t.build.clone();
-    b.out_dir(dir.join("obj")).flag("-fprofile-instr-generate").include("cpp").file("cpp/pgo_train.cc").files(t.runtime);
-    for (prefix, _, _) in TRAINED {
-        b.files((t.sources)(prefix));
-    }
+    b.out_dir(dir.join("obj")).flag("-fprofile-instr-generate").include("cpp").file("cpp/pgo_train.cc").files(t.runtime).files(sources);
     let objects = b.try_compile_intermediates().map_err(|e| format!("the instrumented models do not compile: {e}"))?;
     let exe = dir.join("pgo_train");
     run(

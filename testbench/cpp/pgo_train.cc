@@ -3,7 +3,6 @@
 // Usage: pgo_train CHIP FILE [CHIP FILE ...]; CHIP 0 TMC428, 1 TMC429, 2 TMC4210; FILE holds
 // one little-endian 16-bit word per CLK edge: bit 0 nSCS_C, 1 SCK_C, 2 SDI_C, 3 SDI_S,
 // 4..6 REF1..3, 7..9 REFR1..3, 10 rst.
-#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -46,8 +45,7 @@ bool replay(const char *path) {
         tmc429tb::set_inputs(t, p);
         t.rst = bit(10);
         tmc429tb::falling_edge(t);
-        t.clk = 1;
-        t.eval();
+        tmc429tb::rising_edge(t);
     }
     t.final();
     return true;

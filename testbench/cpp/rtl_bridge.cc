@@ -107,8 +107,7 @@ private:
         } else {
             falling_edge(t);
         }
-        t.clk = 1;
-        t.eval();
+        rising_edge(t);
         ++cycle_;
         if constexpr (kTrace) {
             if (tfp_) tfp_->dump(cycle_ * period_);

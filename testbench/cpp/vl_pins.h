@@ -1,9 +1,16 @@
 // How a Verilated tmc429_top is driven, shared by the bridge (rtl_bridge.cc) and the training
 // run of the profile-guided build (pgo_train.cc, build/pgo.rs): the reset edge, the inputs of
-// an edge and the falling CLK edge.
+// an edge and the falling and rising CLK edges.
 #pragma once
 
 namespace tmc429tb {
+
+// The rising CLK edge: the flip-flops take the inputs set before it.
+template <class V>
+void rising_edge(V &t) {
+    t.clk = 1;
+    t.eval();
+}
 
 // The reset state, as tmc429_model::Tmc429::new makes it: idle pins (nSCS_C = SCK_C = 1,
 // switches open, REFR pulled up), then one CLK edge with rst = 1.
@@ -18,8 +25,7 @@ void reset_edge(V &t) {
     t.rst = 1;
     t.clk = 0;
     t.eval();
-    t.clk = 1;
-    t.eval();
+    rising_edge(t);
     t.rst = 0;
 }
 
