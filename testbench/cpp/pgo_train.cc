@@ -12,11 +12,9 @@
 #include "Vtmc429_428.h"
 #include "Vtmc429_429.h"
 #include "Vtmc429_4210.h"
-#if TMC429_VL_TRIGRPREV
 #include "Vtmc429_428___024root.h"
 #include "Vtmc429_429___024root.h"
 #include "Vtmc429_4210___024root.h"
-#endif
 #include "vl_pins.h"
 
 namespace {

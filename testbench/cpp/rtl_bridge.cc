@@ -15,12 +15,14 @@
 #include "Vtmc429_429_tr.h"
 #include "Vtmc429_4210_tr.h"
 #include "Vtmc429_429_bug_status_tr.h"
-#if TMC429_VL_TRIGRPREV
 #include "Vtmc429_428___024root.h"
 #include "Vtmc429_429___024root.h"
 #include "Vtmc429_4210___024root.h"
 #include "Vtmc429_429_bug_status___024root.h"
-#endif
+#include "Vtmc429_428_tr___024root.h"
+#include "Vtmc429_429_tr___024root.h"
+#include "Vtmc429_4210_tr___024root.h"
+#include "Vtmc429_429_bug_status_tr___024root.h"
 #include "tmc429-testbench/cpp/vl_pins.h"
 
 namespace tmc429tb {
@@ -77,7 +79,7 @@ public:
 
     // Whether peek would give exactly `out` and `pr`: every field peek writes, compared.
     bool same(const RtlOutputs &out, const RtlProbes &pr) const {
-        const V &t = *top_;
+        const auto &t = *top_->rootp;
         bool s = (t.nint_sdo_c == out.nint_sdo_c) & (t.sdoz_c == out.sdoz_c) &
                  (t.sdoz_c_oe == out.sdoz_c_oe) & (t.nscs_s == out.nscs_s) &
                  (t.sck_s == out.sck_s) & (t.sdo_s == out.sdo_s) & (t.sdi_s_o == out.sdi_s_o) &
@@ -117,7 +119,7 @@ private:
 public:
 
     void peek(RtlOutputs &out, RtlProbes &pr) const override {
-        const V &t = *top_;
+        const auto &t = *top_->rootp;
         out.nint_sdo_c = t.nint_sdo_c;
         out.sdoz_c = t.sdoz_c;
         out.sdoz_c_oe = t.sdoz_c_oe;

@@ -8,7 +8,7 @@ namespace tmc429tb {
 // The rising CLK edge: the flip-flops take the inputs set before it.
 template <class V>
 void rising_edge(V &t) {
-    t.clk = 1;
+    t.rootp->clk = 1;
     t.eval();
 }
 
@@ -29,9 +29,11 @@ void reset_edge(V &t) {
     t.rst = 0;
 }
 
-// The input pins of the next edge, from any struct with their fields.
+// The input pins of the next edge, from any struct with their fields. The ports are set in
+// the model's root class: the top class holds a reference to each, one more load per port.
 template <class V, class In>
-void set_inputs(V &t, const In &in) {
+void set_inputs(V &top, const In &in) {
+    auto &t = *top.rootp;
     t.nscs_c = in.nscs_c;
     t.sck_c = in.sck_c;
     t.sdi_c = in.sdi_c;
@@ -51,7 +53,7 @@ void set_inputs(V &t, const In &in) {
 // them, as an eval at clk = 0 would).
 template <class V>
 void falling_edge(V &t) {
-    t.clk = 0;
+    t.rootp->clk = 0;
 #if TMC429_VL_TRIGRPREV
     t.rootp->__Vtrigrprev__TOP__clk = 0;
 #else

@@ -5,27 +5,44 @@
 //! [`run_pair`] runs the model side on the calling thread and the Verilated RTL on a second
 //! thread; the model side hands over batches of [`Expected`] (the inputs of one edge and the
 //! model's outputs and probes after it, in the bridge's layout, made on the model side) through
-//! a bounded channel, and the RTL side applies the same inputs and compares
+//! a bounded channel, each edge as the words of it that changed since the edge before
+//! ([`crate::rtl::wire`]: two words per edge on the regression's stimulus instead of the whole struct's 136 bytes, so that the
+//! RTL side's core reads little of the model side's memory), and the RTL side decodes them,
+//! applies the same inputs and compares
 //! every cycle under the [`Compare`] mask, exactly as the single-thread loop does (inside the
 //! bridge while the states are equal: [`Rtl::tick_agrees`]). It stops at the first
 //! disagreement and reports only its cycle: the caller makes
 //! the full report by running the single-thread loop again (the stimulus is seeded), so the
 //! report is the same whichever way the run was made.
 
+#[cfg(not(tmc429_no_rtl))]
 use std::sync::mpsc::{sync_channel, TryRecvError};
 
 use tmc429_model::{Outputs, Probes};
 
-use crate::rtl::{Expected, Rtl, Variant};
-use crate::signals::{agree, Compare};
+#[cfg(not(tmc429_no_rtl))]
+use crate::rtl::wire::{Decoder, Encoder};
+#[cfg(not(tmc429_no_rtl))]
+use crate::rtl::Rtl;
+use crate::rtl::{Expected, Variant};
+#[cfg(not(tmc429_no_rtl))]
+use crate::signals::agree;
+use crate::signals::Compare;
 
-/// CLK cycles per batch handed from the model side to the RTL side.
+/// CLK cycles `fill` is asked for in one call.
 pub const BATCH: usize = 1024;
 
-/// Batches in flight between the two sides (about 2 MB): bounds the memory and how far the
-/// model side runs past a mismatch. 16 batches are a few milliseconds of the RTL's work, so
-/// that on a busy machine the RTL thread can go on while the model thread waits for a core.
-const DEPTH: usize = 16;
+/// Calls of `fill` per message to the RTL side: each message the RTL side takes may wake the
+/// model side, which waits while the channel is full, and a wake-up costs microseconds.
+#[cfg(not(tmc429_no_rtl))]
+const FILLS: usize = 8;
+
+/// Messages in flight between the two sides (about 130 KB each: two words per edge on the
+/// regression's stimulus): bounds the memory and how far
+/// the model side runs past a mismatch. 4 messages are a few milliseconds of the RTL's work,
+/// so that on a busy machine the RTL thread can go on while the model thread waits for a core.
+#[cfg(not(tmc429_no_rtl))]
+const DEPTH: usize = 4;
 
 /// Runs the model side (`fill`, on this thread) and the RTL of `variant` (on a second thread)
 /// in lock-step. `reset`: the model's outputs and probes before the first edge. `fill` appends
@@ -36,22 +53,25 @@ const DEPTH: usize = 16;
 /// Returns the first cycle whose states differ under `compare` (1 = the first edge, 0 = the
 /// reset states), or `None` if every step agreed; `Err` if the RTL cannot be made (a build
 /// without Verilator: [`crate::rtl::MISSING`]).
+#[cfg(not(tmc429_no_rtl))]
 pub fn run_pair<F>(variant: Variant, compare: Compare, reset: (Outputs, Probes), mut fill: F) -> Result<Option<u64>, String>
 where
     F: FnMut(&mut Vec<Expected>) -> bool,
 {
-    let (tx, rx) = sync_channel::<Vec<Expected>>(DEPTH);
+    let (tx, rx) = sync_channel::<Vec<u64>>(DEPTH);
     // emptied batches go back to the model side, so that no batch is allocated per round
-    let (back_tx, back_rx) = sync_channel::<Vec<Expected>>(DEPTH + 2);
+    let (back_tx, back_rx) = sync_channel::<Vec<u64>>(DEPTH + 2);
     std::thread::scope(|s| {
         let rtl_side = s.spawn(move || -> Result<Option<u64>, String> {
             let mut rtl = Rtl::try_new(variant)?;
             if !agree(compare, &reset.0, &reset.1, &rtl.outputs(), &rtl.probes()) {
                 return Ok(Some(0));
             }
+            let mut wire = Decoder::new();
             let mut n = 0u64;
             for batch in rx {
-                for e in &batch {
+                let mut at = 0;
+                while let Some(e) = wire.next(&batch, &mut at) {
                     n += 1;
                     if !rtl.tick_agrees(e, compare) {
                         return Ok(Some(n));
@@ -61,13 +81,25 @@ where
             }
             Ok(None)
         });
+        let mut wire = Encoder::new();
+        let mut edges = Vec::with_capacity(BATCH);
         loop {
             let mut buf = match back_rx.try_recv() {
                 Ok(b) => b,
-                Err(TryRecvError::Empty | TryRecvError::Disconnected) => Vec::with_capacity(BATCH),
+                Err(TryRecvError::Empty | TryRecvError::Disconnected) => Vec::with_capacity(4 * FILLS * BATCH),
             };
             buf.clear();
-            let more = fill(&mut buf);
+            let mut more = true;
+            for _ in 0..FILLS {
+                edges.clear();
+                more = fill(&mut edges);
+                for e in &edges {
+                    wire.push(e, &mut buf);
+                }
+                if !more {
+                    break;
+                }
+            }
             // a send fails when the RTL side has stopped (mismatch or error)
             if (!buf.is_empty() && tx.send(buf).is_err()) || !more {
                 break;
@@ -76,4 +108,13 @@ where
         drop(tx);
         rtl_side.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
     })
+}
+
+/// Without Verilator there is no RTL side: [`crate::rtl::MISSING`], as [`Rtl::try_new`] gives.
+#[cfg(tmc429_no_rtl)]
+pub fn run_pair<F>(_variant: Variant, _compare: Compare, _reset: (Outputs, Probes), _fill: F) -> Result<Option<u64>, String>
+where
+    F: FnMut(&mut Vec<Expected>) -> bool,
+{
+    Err(crate::rtl::MISSING.to_string())
 }

@@ -10,6 +10,9 @@ use std::path::Path;
 use tmc429_model::{ChainProbe, MotorProbe};
 use tmc429_model::{Chip, Inputs, Outputs, Probes};
 
+#[cfg(not(tmc429_no_rtl))]
+pub mod wire;
+
 /// Whether this build has the Verilated RTL (Verilator was found at build time).
 pub const AVAILABLE: bool = !cfg!(tmc429_no_rtl);
 
@@ -33,7 +36,7 @@ pub fn require(alternative: &str) -> Result<(), String> {
 #[cxx::bridge(namespace = "tmc429tb")]
 mod ffi {
     /// Mirror of `tmc429_model::Inputs`.
-    #[derive(Clone, Copy, Debug, Default)]
+    #[derive(Clone, Copy, Debug, Default, PartialEq)]
     struct RtlInputs {
         nscs_c: bool,
         sck_c: bool,
@@ -48,7 +51,7 @@ mod ffi {
     }
 
     /// Mirror of `tmc429_model::Outputs`.
-    #[derive(Clone, Copy, Debug, Default)]
+    #[derive(Clone, Copy, Debug, Default, PartialEq)]
     struct RtlOutputs {
         nint_sdo_c: bool,
         sdoz_c: bool,
@@ -64,7 +67,7 @@ mod ffi {
     }
 
     /// Mirror of `tmc429_model::MotorProbe`.
-    #[derive(Clone, Copy, Debug, Default)]
+    #[derive(Clone, Copy, Debug, Default, PartialEq)]
     struct RtlMotorProbe {
         x_target: u32,
         x_actual: u32,
@@ -78,7 +81,7 @@ mod ffi {
     }
 
     /// Mirror of `tmc429_model::ChainProbe`.
-    #[derive(Clone, Copy, Debug, Default)]
+    #[derive(Clone, Copy, Debug, Default, PartialEq)]
     struct RtlChainProbe {
         state: u8,
         cell: u8,
@@ -90,7 +93,7 @@ mod ffi {
     }
 
     /// Mirror of `tmc429_model::Probes`.
-    #[derive(Clone, Copy, Debug, Default)]
+    #[derive(Clone, Copy, Debug, Default, PartialEq)]
     struct RtlProbes {
         m0: RtlMotorProbe,
         m1: RtlMotorProbe,
@@ -155,7 +158,7 @@ impl fmt::Display for Variant {
 /// bridge's layout: [`Rtl::tick_agrees`] compares the RTL with it inside the bridge, without
 /// copying the RTL's state out. Made on the model side of the two-thread pair (crate::pair).
 #[cfg(not(tmc429_no_rtl))]
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Expected {
     inp: ffi::RtlInputs,
     out: ffi::RtlOutputs,
@@ -230,6 +233,12 @@ impl Expected {
     pub fn model(&self) -> (Outputs, Probes) {
         (outputs(&self.out), probes(&self.probes))
     }
+
+    /// Every input low and every output and probe 0: where both ends of the pair's wire
+    /// format start ([`wire`]).
+    pub fn zero() -> Expected {
+        Expected { inp: ffi::RtlInputs::default(), out: ffi::RtlOutputs::default(), probes: ffi::RtlProbes::default() }
+    }
 }
 
 #[cfg(not(tmc429_no_rtl))]
@@ -278,7 +287,6 @@ pub struct Rtl {
     sim: cxx::UniquePtr<ffi::RtlSim>,
     variant: Variant,
     traced: bool,
-    inp: ffi::RtlInputs,
     out: ffi::RtlOutputs,
     probes: ffi::RtlProbes,
 }
@@ -308,14 +316,7 @@ impl Rtl {
     fn build(variant: Variant, traced: bool) -> Rtl {
         let sim = ffi::new_rtl(variant.code(), traced);
         assert!(!sim.is_null(), "every Variant has a Verilated model");
-        let mut rtl = Rtl {
-            sim,
-            variant,
-            traced,
-            inp: ffi::RtlInputs::default(),
-            out: ffi::RtlOutputs::default(),
-            probes: ffi::RtlProbes::default(),
-        };
+        let mut rtl = Rtl { sim, variant, traced, out: ffi::RtlOutputs::default(), probes: ffi::RtlProbes::default() };
         rtl.sim.peek(&mut rtl.out, &mut rtl.probes);
         rtl
     }
@@ -327,8 +328,7 @@ impl Rtl {
     /// One rising CLK edge.
     #[inline]
     pub fn tick(&mut self, i: &Inputs) -> Outputs {
-        self.inp = rtl_inputs(i);
-        self.sim.pin_mut().tick(&self.inp, &mut self.out, &mut self.probes);
+        self.sim.pin_mut().tick(&rtl_inputs(i), &mut self.out, &mut self.probes);
         self.outputs()
     }
 
@@ -337,7 +337,6 @@ impl Rtl {
     /// [`signals::agree`](crate::signals::agree), found inside the bridge while they are equal.
     #[inline]
     pub fn tick_agrees(&mut self, e: &Expected, compare: crate::signals::Compare) -> bool {
-        self.inp = e.inp;
         if self.sim.pin_mut().tick_check(&e.inp, &e.out, &e.probes) {
             // equal to what tick would have copied out
             self.out = e.out;
