@@ -3,17 +3,16 @@
 //! The stimulus is open-loop ([`crate::stimulus::Stimulus::next_txn`] never reads an output),
 //! so the model side — stimulus, pin driver, golden model, coverage — can run ahead of the RTL.
 //! [`run_pair`] runs the model side on the calling thread and the Verilated RTL on a second
-//! thread; the model side hands over batches of [`Expected`] (the inputs of one edge and the
-//! model's outputs and probes after it, in the bridge's layout, made on the model side) through
-//! a bounded channel, each edge as the words of it that changed since the edge before
-//! ([`crate::rtl::wire`]: two words per edge on the regression's stimulus instead of the whole struct's 136 bytes, so that the
-//! RTL side's core reads little of the model side's memory), and the RTL side decodes them,
-//! applies the same inputs and compares
-//! every cycle under the [`Compare`] mask, exactly as the single-thread loop does (inside the
-//! bridge while the states are equal: [`Rtl::tick_agrees`]). It stops at the first
-//! disagreement and reports only its cycle: the caller makes
-//! the full report by running the single-thread loop again (the stimulus is seeded), so the
-//! report is the same whichever way the run was made.
+//! thread; the model side makes each edge as [`Expected`] (the inputs of the edge and the
+//! model's outputs and probes after it, in the bridge's layout) and hands the edges through a
+//! bounded channel, each as the words of it that changed since the edge before
+//! ([`crate::rtl::wire`]: two words per edge on the regression's stimulus, where the struct is
+//! 136 bytes, so that the RTL side's core reads little of the model side's memory). The RTL
+//! side decodes them, applies the same inputs and compares every cycle under the [`Compare`]
+//! mask, exactly as the single-thread loop does (inside the bridge while the states are
+//! equal: [`Rtl::tick_agrees`]). It stops at the first disagreement and reports only its
+//! cycle: the caller makes the full report by running the single-thread loop again (the
+//! stimulus is seeded), so the report is the same whichever way the run was made.
 
 #[cfg(not(tmc429_no_rtl))]
 use std::sync::mpsc::{sync_channel, TryRecvError};
