@@ -24,6 +24,40 @@ fn expected(s: &Step) -> Expected {
     Expected::new(&s.inp, &s.out, &s.probes)
 }
 
+/// The model's reset state and its first `n` edges on the stimulus of `profile` and `seed`.
+fn model_steps(chip: Chip, profile: Profile, seed: u64, n: usize) -> (Reset, Vec<Step>) {
+    let mut stim = Stimulus::new(chip, profile, seed);
+    let mut drv = Driver::default();
+    let mut model = Tmc429::new(chip);
+    let reset = (model.outputs(), model.probes());
+    let steps = (0..n)
+        .map(|_| {
+            if drv.ready() {
+                drv.start(stim.next_txn());
+            }
+            let inp = drv.step().0;
+            let out = model.tick(&inp);
+            Step { inp, out, probes: model.probes() }
+        })
+        .collect();
+    (reset, steps)
+}
+
+type Reset = (tmc429_model::Outputs, tmc429_model::Probes);
+
+/// `run_pair` on `steps`, handed over `chunk` edges per call, every signal compared.
+fn pair_first(chip: Chip, reset: Reset, steps: &[Step], chunk: usize) -> Option<u64> {
+    let mut rest = steps.chunks(chunk);
+    run_pair(Variant::Chip(chip), Compare::all(), reset, |buf| match rest.next() {
+        Some(c) => {
+            buf.extend(c.iter().map(expected));
+            true
+        }
+        None => false,
+    })
+    .unwrap()
+}
+
 #[test]
 fn two_threads_equal_one_thread() {
     for chip in Chip::ALL {
@@ -86,18 +120,8 @@ fn run_pair_finds_the_first_disagreeing_cycle() {
         let m = Tmc429::new(chip);
         (m.outputs(), m.probes())
     };
-    let pair = |v: Vec<Step>, reset| {
-        // batches of an odd size, so that the disagreement falls inside one
-        let mut rest = v.chunks(777);
-        run_pair(Variant::Chip(chip), Compare::all(), reset, |buf| match rest.next() {
-            Some(c) => {
-                buf.extend(c.iter().map(expected));
-                true
-            }
-            None => false,
-        })
-        .unwrap()
-    };
+    // batches of an odd size, so that the disagreement falls inside one
+    let pair = |v: Vec<Step>, reset| pair_first(chip, reset, &v, 777);
     assert_eq!(pair(steps(None), reset), None);
     assert_eq!(pair(steps(Some(0)), reset), Some(1));
     assert_eq!(pair(steps(Some(12_345)), reset), Some(12_346));
@@ -172,20 +196,7 @@ fn poke(o: &mut tmc429_model::Outputs, p: &mut tmc429_model::Probes, k: usize) {
 fn run_pair_compares_every_signal() {
     use tmc429_testbench::signals::{diff, flatten, N_SIGNALS};
     let chip = Chip::Tmc429;
-    let mut stim = Stimulus::new(chip, Profile::Drivers, 1);
-    let mut drv = Driver::default();
-    let mut model = Tmc429::new(chip);
-    let reset = (model.outputs(), model.probes());
-    let steps: Vec<Step> = (0..60_000)
-        .map(|_| {
-            if drv.ready() {
-                drv.start(stim.next_txn());
-            }
-            let inp = drv.step().0;
-            let out = model.tick(&inp);
-            Step { inp, out, probes: model.probes() }
-        })
-        .collect();
+    let (reset, steps) = model_steps(chip, Profile::Drivers, 1, 60_000);
     let mut tested = 0;
     for k in 0..N_SIGNALS {
         // the first cycle from 1000 on in which the flipped bit counts as a difference
@@ -199,15 +210,7 @@ fn run_pair_compares_every_signal() {
         let mut v = steps[..=j].to_vec();
         v[j].out = o;
         v[j].probes = p;
-        let mut rest = v.chunks(1000);
-        let first = run_pair(Variant::Chip(chip), Compare::all(), reset, |buf| match rest.next() {
-            Some(c) => {
-                buf.extend(c.iter().map(expected));
-                true
-            }
-            None => false,
-        })
-        .unwrap();
+        let first = pair_first(chip, reset, &v, 1000);
         assert_eq!(first, Some(j as u64 + 1), "signal {}", tmc429_testbench::signals::SIGNALS[k].name);
         tested += 1;
     }
@@ -221,20 +224,7 @@ fn run_pair_compares_every_signal() {
 #[test]
 fn run_pair_compares_the_bits_of_each_width() {
     let chip = Chip::Tmc429;
-    let mut stim = Stimulus::new(chip, Profile::Motion, 3);
-    let mut drv = Driver::default();
-    let mut model = Tmc429::new(chip);
-    let reset = (model.outputs(), model.probes());
-    let steps: Vec<Step> = (0..3000)
-        .map(|_| {
-            if drv.ready() {
-                drv.start(stim.next_txn());
-            }
-            let inp = drv.step().0;
-            let out = model.tick(&inp);
-            Step { inp, out, probes: model.probes() }
-        })
-        .collect();
+    let (reset, steps) = model_steps(chip, Profile::Motion, 3, 3000);
     type Poke = fn(&mut tmc429_model::Probes);
     let cases: [(Poke, Option<u64>); 8] = [
         (|p| p.motor[1].v_internal += 1 << 20, None),
@@ -249,15 +239,6 @@ fn run_pair_compares_the_bits_of_each_width() {
     for (k, (poke, first)) in cases.into_iter().enumerate() {
         let mut v = steps.clone();
         poke(&mut v[2222].probes);
-        let mut rest = v.chunks(500);
-        let found = run_pair(Variant::Chip(chip), Compare::all(), reset, |buf| match rest.next() {
-            Some(c) => {
-                buf.extend(c.iter().map(expected));
-                true
-            }
-            None => false,
-        })
-        .unwrap();
-        assert_eq!(found, first, "case {k}");
+        assert_eq!(pair_first(chip, reset, &v, 500), first, "case {k}");
     }
 }
