@@ -1,7 +1,7 @@
 //! The lock-step pair's wire format (crate::pair): each edge's [`Expected`] as the words of
-//! the layout below that changed since the edge before, so that the model side hands the RTL side
-//! a few bytes per CLK cycle instead of the whole struct (docs/performance.md, "The pair's
-//! wire format").
+//! the layout below that changed since the edge before, so that the model side hands the RTL
+//! side a few bytes per CLK cycle instead of the whole struct (docs/performance.md, "The
+//! pair's wire format").
 //!
 //! An edge is a header word — word 0 of the layout (the inputs, the output pins, the status
 //! byte and the power-down flag) with a mask in its low 16 bits of the other words that follow
