@@ -158,7 +158,7 @@ impl fmt::Display for Variant {
 /// bridge's layout: [`Rtl::tick_agrees`] compares the RTL with it inside the bridge, without
 /// copying the RTL's state out. Made on the model side of the two-thread pair (crate::pair).
 #[cfg(not(tmc429_no_rtl))]
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Expected {
     inp: ffi::RtlInputs,
     out: ffi::RtlOutputs,
@@ -232,12 +232,6 @@ impl Expected {
     /// The expected outputs and probes, back in the model's types.
     pub fn model(&self) -> (Outputs, Probes) {
         (outputs(&self.out), probes(&self.probes))
-    }
-
-    /// Every input low and every output and probe 0: where both ends of the pair's wire
-    /// format start ([`wire`]).
-    pub fn zero() -> Expected {
-        Expected { inp: ffi::RtlInputs::default(), out: ffi::RtlOutputs::default(), probes: ffi::RtlProbes::default() }
     }
 }
 

@@ -11,7 +11,7 @@
 use super::Expected;
 
 /// Words of one edge's [`Expected`]; word 0 is the header.
-pub const WORDS: usize = 14;
+const WORDS: usize = 14;
 
 /// The header's low bits: bit k set = word k follows (k = 1..WORDS-1).
 const MASK: u64 = 0xFFFF;
@@ -82,9 +82,9 @@ pub struct Encoder {
 }
 
 impl Encoder {
-    /// Both sides start from [`Expected::zero`].
+    /// Both sides start from [`Expected::default`]: every input low, every output and probe 0.
     pub fn new() -> Encoder {
-        Encoder { last: words(&Expected::zero()) }
+        Encoder { last: words(&Expected::default()) }
     }
 
     /// Appends `e` to `out`: the header, then the words that differ from the edge before.
@@ -119,7 +119,7 @@ pub struct Decoder {
 
 impl Decoder {
     pub fn new() -> Decoder {
-        Decoder { e: Expected::zero() }
+        Decoder { e: Expected::default() }
     }
 
     /// Decodes the edge that starts at `batch[*at]` and moves `at` past it; `None` at the
