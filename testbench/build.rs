@@ -17,6 +17,9 @@
 //! models replay the golden pin-level vectors first, and clang lays out each model's edge by
 //! the branches they took, about 10 % faster again. `TMC429_VL_PGO=0` turns it off.
 //!
+//! The bridge applies the untraced models' CLK edges without Verilator's eval loop where the
+//! generated code allows it (build/vl_edge.rs): about 5 % faster again.
+//!
 //! Without the default feature `rtl` (the Python package builds the crate so, python/) nothing
 //! of the RTL is built, as without Verilator but without a warning.
 //!
@@ -35,6 +38,10 @@ use std::process::Command;
 mod pgo;
 #[path = "build/pgo_pins.rs"]
 mod pgo_pins;
+#[path = "build/vl_edge.rs"]
+mod vl_edge;
+
+use vl_edge::EdgeForm;
 
 /// (prefix, CHIP parameter, extra Verilog defines); each is built as `prefix` (no trace) and
 /// `prefix_tr` (`--trace`).
@@ -65,12 +72,12 @@ fn main() {
     fs::create_dir_all(&mdir).expect("create Verilator output directory");
 
     let sources = rtl_sources(&rtl_dir);
-    let (generated, falling_edge_flag) = verilate(&verilator, &rtl_dir, &mdir, &sources);
+    let (generated, edges) = verilate(&verilator, &rtl_dir, &mdir, &sources);
     let compiler = model_compiler();
     let profile = match &compiler.cxx {
         Some(cxx) if compiler.clang => pgo::profile(&pgo::Training {
             cxx,
-            build: model_build(&compiler, &mdir, falling_edge_flag),
+            build: model_build(&compiler, &mdir, &edges),
             mdir: &mdir,
             golden: &manifest.join("../vectors/golden"),
             sources: &|prefix| generated_sources(&mdir, prefix),
@@ -78,8 +85,8 @@ fn main() {
         }),
         _ => None,
     };
-    let objects = compile_models(&compiler, &generated, &mdir, falling_edge_flag, profile.as_ref());
-    compile_bridge(&objects, &mdir, falling_edge_flag);
+    let objects = compile_models(&compiler, &generated, &mdir, &edges, profile.as_ref());
+    compile_bridge(&objects, &mdir, &edges);
     println!("cargo:rustc-link-lib=pthread");
     if compiler.clang {
         // clang calls libatomic where GCC inlines (Verilator's runtime: `__atomic_is_lock_free`)
@@ -115,11 +122,9 @@ fn rtl_sources(rtl_dir: &Path) -> Vec<PathBuf> {
 }
 
 /// Verilates every variant, untraced and traced, into `mdir`: the generated C++ files, and
-/// whether every untraced model keeps its clock's previous value in `__Vtrigrprev__TOP__clk`
-/// (Verilator 5.006; then the bridge applies the falling edge without an eval).
-fn verilate(verilator: &str, rtl_dir: &Path, mdir: &Path, sources: &[PathBuf]) -> (Vec<PathBuf>, bool) {
+/// how the bridge may apply the CLK edges to the untraced models (build/vl_edge.rs).
+fn verilate(verilator: &str, rtl_dir: &Path, mdir: &Path, sources: &[PathBuf]) -> (Vec<PathBuf>, EdgeForm) {
     let mut generated = Vec::new();
-    let mut falling_edge_flag = true;
     for (base, chip, defines) in VARIANTS {
         for traced in [false, true] {
             let prefix = if traced { format!("{base}_tr") } else { base.to_string() };
@@ -141,13 +146,11 @@ fn verilate(verilator: &str, rtl_dir: &Path, mdir: &Path, sources: &[PathBuf]) -
             cmd.args(sources);
             let status = cmd.status().unwrap_or_else(|e| panic!("cannot run `{verilator}` ({e}); install Verilator 5 (scripts/setup)"));
             assert!(status.success(), "verilator failed for {prefix}");
-            if !traced {
-                falling_edge_flag &= has_trigger_flag(mdir, &prefix);
-            }
             generated.extend(generated_sources(mdir, &prefix));
         }
     }
-    (generated, falling_edge_flag)
+    let untraced: Vec<&str> = VARIANTS.iter().map(|(base, _, _)| *base).collect();
+    (generated, EdgeForm::of(mdir, &untraced))
 }
 
 /// The models and Verilator's runtime with clang++ at -O2 (the trained models with their
@@ -157,7 +160,7 @@ fn compile_models(
     compiler: &ModelCompiler,
     generated: &[PathBuf],
     mdir: &Path,
-    falling_edge_flag: bool,
+    edges: &EdgeForm,
     profile: Option<&pgo::Profile>,
 ) -> Vec<PathBuf> {
     if compiler.cxx.is_none() {
@@ -171,11 +174,11 @@ fn compile_models(
     let trained = |g: &PathBuf| profile.is_some_and(|p| p.sources.contains(g));
     let mut objects = Vec::new();
     if let Some(p) = profile {
-        let mut models = model_build(compiler, mdir, falling_edge_flag);
+        let mut models = model_build(compiler, mdir, edges);
         models.files(generated.iter().filter(|g| trained(g))).flag(format!("-fprofile-instr-use={}", p.path.display()));
         objects.extend(models.compile_intermediates());
     }
-    let mut rest = model_build(compiler, mdir, falling_edge_flag);
+    let mut rest = model_build(compiler, mdir, edges);
     rest.files(generated.iter().filter(|g| !trained(g))).files(runtime_sources());
     objects.extend(rest.compile_intermediates());
     objects
@@ -188,7 +191,7 @@ fn runtime_sources() -> Vec<PathBuf> {
 }
 
 /// The models' compiler with its flags, includes and defines, without files.
-fn model_build(compiler: &ModelCompiler, mdir: &Path, falling_edge_flag: bool) -> cc::Build {
+fn model_build(compiler: &ModelCompiler, mdir: &Path, edges: &EdgeForm) -> cc::Build {
     let inc = Path::new(VERILATOR_INCLUDE);
     let mut models = cc::Build::new();
     if let Some(cxx) = &compiler.cxx {
@@ -208,13 +211,15 @@ fn model_build(compiler: &ModelCompiler, mdir: &Path, falling_edge_flag: bool) -
     for (k, v) in VL_DEFINES {
         models.define(k, v);
     }
-    models.define("TMC429_VL_TRIGRPREV", if falling_edge_flag { "1" } else { "0" });
+    for (k, v) in edges.defines() {
+        models.define(k, v);
+    }
     models
 }
 
 /// The cxx bridge (src/rtl.rs, cpp/rtl_bridge.cc) with the models' objects, as the library
 /// `tmc429_vrtl`.
-fn compile_bridge(objects: &[PathBuf], mdir: &Path, falling_edge_flag: bool) {
+fn compile_bridge(objects: &[PathBuf], mdir: &Path, edges: &EdgeForm) {
     let inc = Path::new(VERILATOR_INCLUDE);
     let mut build = cxx_build::bridge("src/rtl.rs");
     build
@@ -232,7 +237,9 @@ fn compile_bridge(objects: &[PathBuf], mdir: &Path, falling_edge_flag: bool) {
     for (k, v) in VL_DEFINES {
         build.define(k, v);
     }
-    build.define("TMC429_VL_TRIGRPREV", if falling_edge_flag { "1" } else { "0" });
+    for (k, v) in edges.defines() {
+        build.define(k, v);
+    }
     build.compile("tmc429_vrtl");
 }
 
@@ -293,13 +300,6 @@ fn rerun_on_path() {
         }
     }
     println!("cargo:rerun-if-env-changed=PATH");
-}
-
-/// Whether the model `prefix` keeps the previous value of `clk` for its edge detection in the
-/// member `__Vtrigrprev__TOP__clk` of its root class (Verilator 5.006; other versions name it
-/// otherwise, and the bridge then evaluates the falling edge like any other).
-fn has_trigger_flag(mdir: &Path, prefix: &str) -> bool {
-    fs::read_to_string(mdir.join(format!("{prefix}___024root.h"))).is_ok_and(|h| h.contains("CData/*0:0*/ __Vtrigrprev__TOP__clk;"))
 }
 
 /// The .cpp files Verilator generated for one prefix.

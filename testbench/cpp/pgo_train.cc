@@ -17,6 +17,10 @@
 #include "Vtmc429_4210___024root.h"
 #include "vl_pins.h"
 
+TMC429_VL_POSEDGE(Vtmc429_428)
+TMC429_VL_POSEDGE(Vtmc429_429)
+TMC429_VL_POSEDGE(Vtmc429_4210)
+
 namespace {
 
 struct Pins {
@@ -43,7 +47,7 @@ bool replay(const char *path) {
         tmc429tb::set_inputs(t, p);
         t.rst = bit(10);
         tmc429tb::falling_edge(t);
-        tmc429tb::rising_edge(t);
+        tmc429tb::rising_edge<true>(t);
     }
     t.final();
     return true;

@@ -25,6 +25,11 @@
 #include "Vtmc429_429_bug_status_tr___024root.h"
 #include "tmc429-testbench/cpp/vl_pins.h"
 
+TMC429_VL_POSEDGE(Vtmc429_428)
+TMC429_VL_POSEDGE(Vtmc429_429)
+TMC429_VL_POSEDGE(Vtmc429_4210)
+TMC429_VL_POSEDGE(Vtmc429_429_bug_status)
+
 namespace tmc429tb {
 namespace {
 
@@ -109,7 +114,7 @@ private:
         } else {
             falling_edge(t);
         }
-        rising_edge(t);
+        rising_edge<!kTrace>(t);
         ++cycle_;
         if constexpr (kTrace) {
             if (tfp_) tfp_->dump(cycle_ * period_);

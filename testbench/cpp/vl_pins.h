@@ -3,11 +3,30 @@
 // an edge and the falling and rising CLK edges.
 #pragma once
 
+// The function Verilator makes of the untraced model P's rising-edge logic, under a name the
+// rising edge finds by its root class: one declaration per model, in the file that uses it.
+#define TMC429_VL_POSEDGE(P)                                              \
+    void P##___024root___nba_sequent__TOP__0(P##___024root *vlSelf);     \
+    inline void tmc429_vl_posedge(P##___024root *r) { P##___024root___nba_sequent__TOP__0(r); }
+
 namespace tmc429tb {
 
-// The rising CLK edge: the flip-flops take the inputs set before it.
-template <class V>
+// The rising CLK edge: the flip-flops take the inputs set before it. With kDirect (an untraced
+// model, declared with TMC429_VL_POSEDGE) and TMC429_VL_DIRECT_EDGE (build/vl_edge.rs: its
+// eval at a rising clk runs that one function once and nothing else), the function is called
+// without the eval's scheduling loop, and the clock's previous level is recorded as the eval
+// would; otherwise the model is evaluated.
+template <bool kDirect = false, class V>
 void rising_edge(V &t) {
+#if TMC429_VL_DIRECT_EDGE
+    if constexpr (kDirect) {
+        auto *r = t.rootp;
+        r->clk = 1;
+        r->__Vtrigrprev__TOP__clk = 1;
+        tmc429_vl_posedge(r);
+        return;
+    }
+#endif
     t.rootp->clk = 1;
     t.eval();
 }
