@@ -4,13 +4,14 @@
 //! A model's `eval()` runs Verilator's scheduling loop: it forms the triggers (the posedge of
 //! clk from clk and its previous value), runs the always blocks of each trigger, and loops
 //! until no trigger fires. Every always block of rtl/ is clocked by the rising edge of clk
-//! alone and nothing is combinational from an input to a register, so Verilator 5.006 makes
-//! of the whole design one function run on that trigger (`…___nba_sequent__TOP__0`), and an
+//! alone and no signal follows an input pin combinationally between edges (Verilator's
+//! input-combinational region is empty), so Verilator 5.006 makes of the whole design one
+//! function run on that trigger (`…___nba_sequent__TOP__0`), and an
 //! eval at the rising edge runs exactly that function once. The bridge then calls it directly,
 //! without the loop around it; the falling edge only records the clock's level. Both are
 //! taken only where the generated code has exactly that form, checked here for every
-//! untraced model; for any other form (another Verilator, a combinational path from an input,
-//! a second clock) the bridge calls `eval()` as for the traced models.
+//! untraced model; for any other form (another Verilator, a signal that follows an input
+//! between edges, a second clock) the bridge calls `eval()` as for the traced models.
 
 use std::fs;
 use std::path::Path;
@@ -93,17 +94,18 @@ fn body(src: &str, head: &str) -> Option<String> {
     Some(lines.join("\n"))
 }
 
-/// A function body's statements without whitespace: no comments, no debug-only code
-/// (`VL_DEBUG_IF`, `#ifdef VL_DEBUG` blocks), no unused-variable guard or symbol table local.
+/// A function body's statements without whitespace: no comments, no preprocessor blocks (the
+/// generated code's `#ifdef VL_DEBUG`), no `VL_DEBUG_IF`, unused-variable guard or symbol
+/// table local.
 fn statements(body: &str) -> String {
     let mut out = String::new();
-    let mut debug = 0;
+    let mut in_if = 0;
     for l in body.lines().map(str::trim) {
         if l.starts_with("#if") {
-            debug += 1;
+            in_if += 1;
         } else if l.starts_with("#endif") {
-            debug -= 1;
-        } else if debug == 0
+            in_if -= 1;
+        } else if in_if == 0
             && !l.starts_with("//")
             && !l.starts_with("VL_DEBUG_IF")
             && !l.starts_with("if (false && vlSelf)")
