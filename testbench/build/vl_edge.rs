@@ -6,12 +6,12 @@
 //! until no trigger fires. Every always block of rtl/ is clocked by the rising edge of clk
 //! alone and no signal follows an input pin combinationally between edges (Verilator's
 //! input-combinational region is empty), so Verilator 5.006 makes of the whole design one
-//! function run on that trigger (`…___nba_sequent__TOP__0`), and an
-//! eval at the rising edge runs exactly that function once. The bridge then calls it directly,
-//! without the loop around it; the falling edge only records the clock's level. Both are
-//! taken only where the generated code has exactly that form, checked here for every
-//! untraced model; for any other form (another Verilator, a signal that follows an input
-//! between edges, a second clock) the bridge calls `eval()` as for the traced models.
+//! function run on that trigger (`…___nba_sequent__TOP__0`), and an eval at the rising edge
+//! runs exactly that function once. The bridge then calls it directly, without the loop
+//! around it; the falling edge only records the clock's level. Both are taken only where the
+//! generated code has exactly that form, checked here for every untraced model; for any other
+//! form (another Verilator, a signal that follows an input between edges, a second clock) the
+//! bridge calls `eval()` as for the traced models.
 
 use std::fs;
 use std::path::Path;

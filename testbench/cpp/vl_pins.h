@@ -18,16 +18,14 @@ namespace tmc429tb {
 // would; otherwise the model is evaluated.
 template <bool kDirect = false, class V>
 void rising_edge(V &t) {
+    t.rootp->clk = 1;
 #if TMC429_VL_DIRECT_EDGE
     if constexpr (kDirect) {
-        auto *r = t.rootp;
-        r->clk = 1;
-        r->__Vtrigrprev__TOP__clk = 1;
-        tmc429_vl_posedge(r);
+        t.rootp->__Vtrigrprev__TOP__clk = 1;
+        tmc429_vl_posedge(t.rootp);
         return;
     }
 #endif
-    t.rootp->clk = 1;
     t.eval();
 }
 
