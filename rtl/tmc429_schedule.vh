@@ -9,5 +9,6 @@
 `define TMC429_PH_COMMIT(m) ((m) == 0 ? 5'd14 : (m) == 1 ? 5'd21 : 5'd28) // motor m's target velocity committed in this edge
 `define TMC429_PH_RAMP(m) ((m) == 0 ? 5'd16 : (m) == 1 ? 5'd23 : 5'd30) // motor m's ramp tick in a ramp frame
 `define TMC429_PH_PULSE(m) ((m) == 0 ? 5'd17 : (m) == 1 ? 5'd24 : 5'd31) // motor m's pulse tick in a pulse frame
+`define TMC429_PH_STEPDIR(m) ((m) == 0 ? 5'd19 : (m) == 1 ? 5'd26 : 5'd1) // motor m's Step/Dir slot (and 16 after it)
 
 `endif // TMC429_SCHEDULE_VH

@@ -1,7 +1,7 @@
-// tmc429_stepdir: the Step/Dir output of one motor (docs/model-contract.md C91-C96;
-// TMC429 §10, §8.2.4; TMC4210).
+// tmc429_stepdir: the Step/Dir output of the motors, one unit in the frame's slots
+// (docs/model-contract.md C91-C96; TMC429 §10, §8.2.4; TMC4210).
 //
-// A state machine with one down-counter:
+// Per motor a state machine with one down-counter:
 //   READY --backlog != 0, same direction--> PULSE (STEP active or toggled, T edges)
 //     -> SPACE (STEP inactive, T edges; skipped with step_half) -> READY
 //   READY --backlog != 0, other direction--> DIRSET (DIR changed, T edges) -> READY
@@ -10,42 +10,43 @@
 // account (C95). While disabled (`en` = 0: not in Step/Dir mode) the unit is held in its
 // reset state; while powered down (`run` = 0) it holds (C66).
 //
+// Motor m's step flag is 1 only after the edge of its pulse tick's step (C53), so the unit
+// takes a step only in the edge at phase TMC429_PH_STEPDIR(m) (rtl/tmc429_schedule.vh; the
+// prescaler and this unit both stand still while powered down). A pulse, space or DIR set-up
+// lasts T = 16 (1 + STPDIV) edges, so every change of motor m's state falls in an edge at that
+// phase or 16 after it: its Step/Dir slots. A state counts the slots it lasts (STPDIV down to
+// 0), and the motors share one backlog adder: each slot registers the change of its motor's
+// backlog, and the edge after it adds the change (their slots and those edges never coincide:
+// the schedule's test). The three backlogs are words of a block RAM (one motor: a register);
+// the backlog = 0, 1, -1 and its sign are flip-flops of each motor, formed with the word, so
+// that a slot's decisions wait for neither the RAM nor the adder.
+//
 // `step_n` / `dir_n` are the levels of the new state (before inv_stp / inv_dir), for the
 // output pin registers. Same function as tmc429_model::stepdir::StepDir.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "tmc429_schedule.vh"
 
-module tmc429_stepdir (
-    input  wire       clk,
-    input  wire       rst,
-    input  wire       run,         // not powered down
-    input  wire       en,          // Step/Dir mode (old state)
-    input  wire       step_in,     // the motion core stepped (old state)
-    input  wire       dir_in,      // direction of that step, 1 = negative
-    input  wire [3:0] stpdiv,      // clk2_div[3:0]
-    input  wire       step_half,
-    output reg        step,        // STEP level before inv_stp (toggle state with step_half)
-    output reg        dir,         // DIR level before inv_dir, 1 = negative
-    output reg        step_n,
-    output reg        dir_n
+module tmc429_stepdir #(
+    parameter MOTORS = 3           // 3 (TMC429) or 1 (TMC4210)
+) (
+    input  wire              clk,
+    input  wire              rst,
+    input  wire              run,          // not powered down
+    input  wire              en,           // Step/Dir mode (old state)
+    input  wire [3:0]        phase,        // prescaler[3:0] (old state): the phase in the half frame
+    input  wire [MOTORS-1:0] step_in,      // the motion core stepped (old state)
+    input  wire [MOTORS-1:0] dir_in,       // direction of that step, 1 = negative
+    input  wire [3:0]        stpdiv,       // clk2_div[3:0]
+    input  wire              step_half,
+    output wire [MOTORS-1:0] step,         // STEP level before inv_stp (toggle state with step_half)
+    output wire [MOTORS-1:0] dir,          // DIR level before inv_dir, 1 = negative
+    output wire [MOTORS-1:0] step_n,
+    output wire [MOTORS-1:0] dir_n
 );
     localparam READY = 2'd0, PULSE = 2'd1, SPACE = 2'd2, DIRSET = 2'd3;
 
-    reg [1:0]  state, state_n;
-    reg [8:0]  cnt, cnt_n;
-    reg [23:0] backlog;
-
-    // The backlog after the motion core's step, b = backlog + s (s = +-1 or 0), is not formed:
-    // its sign and b != 0 follow from backlog = 0, 1, -1, and the new backlog is one addition
-    // backlog + s + t with t = -sign(b) when a STEP pulse starts (take), else 0.
-    // backlog = 0, 1, -1 as registers formed with the next state: the new backlog is
-    // backlog + dlt (dlt = -2..2), so it is v exactly when backlog = v - dlt, and the
-    // comparisons of the backlog with -3..3 do not wait for the addition
-    reg         b_z, b_p1, b_m1;
-    // hold = state != READY and cnt > 1, a register formed with the next state: a counting
-    // state keeps it while cnt > 2, a pulse / space / DIR set-up starts with cnt = T >= 16
-    reg         hold, hold_n;
-    // b = backlog + s: {b != 0, b < 0}
+    // b = backlog + s: {b != 0, b < 0}, from backlog = 0, 1, -1 and its sign
     function [1:0] b_of;
         input       s_pos, s_neg, bl_neg, z, p1, m1;
         begin
@@ -54,8 +55,7 @@ module tmc429_stepdir (
         end
     endfunction
     // the backlog's change, -2..2: dlt = s + t, where take needs b's sign = dir, so t = dir ?
-    // +1 : -1, and both sums are formed from flip-flops without an adder; take selects
-    // between them
+    // +1 : -1
     function [2:0] dlt_of;
         input       s_pos, s_neg, take, d;
         begin
@@ -66,9 +66,7 @@ module tmc429_stepdir (
                 dlt_of = s_pos ? 3'd1 : (s_neg ? 3'd7 : 3'd0);
         end
     endfunction
-    // backlog = 3 .. -3, one bit each (e[v + 3]); the backlog's next state and these
-    // comparisons are formed only where the unit runs in Step/Dir mode (the clocked block
-    // below), so that a simulator evaluates them only there (docs/rtl.md, "Logic in its slot")
+    // backlog = 3 .. -3, one bit each (e[v + 3])
     function [6:0] near;
         input [23:0] b;
         reg hi0, hi1;
@@ -97,98 +95,172 @@ module tmc429_stepdir (
         end
     endfunction
 
-    // The next state; the decisions are formed only where the unit runs in Step/Dir mode, so
-    // that a simulator evaluates them in no other edge (docs/rtl.md, "Logic in its slot")
-    reg        s_pos, s_neg, neg, bl_nz, pend, cnt_gt2;
-    reg  [8:0] t_step;
+    // the new backlog is negative: with the old one beyond -3..3 its sign (|dlt| <= 2), else
+    // v + dlt < 0 for the v it is; no carry chain
+    function neg_after;
+        input [6:0] ev;
+        input       bl_neg;
+        input [2:0] d;
+        integer v, dv;
+        begin
+            dv        = $signed({{29{d[2]}}, d});
+            neg_after = ~|ev & bl_neg;
+            for (v = -3; v <= 3; v = v + 1)
+                if (v + dv < 0)
+                    neg_after = neg_after | ev[v + 3];
+        end
+    endfunction
+
+    // ---- the slots: motor m's in the edges at phase PH_STEPDIR(m) and 16 after it ----------
+    // `slot` is a register formed one edge ahead (the phase after an edge is phase + run), so
+    // that the decisions start at flip-flops
+    reg  [MOTORS-1:0] slot;
+    wire [MOTORS-1:0] ev    = {MOTORS{run & en}} & slot;
+    wire              clear = run & ~en;       // held in the reset state (C91)
+
+    // ---- the backlog: one adder and one set of comparisons, in the edge after a slot ----------
+    // A slot decides from the motor's flags alone and registers the backlog's change (`d_q`,
+    // `wb`: the motor, one-hot); the edge after it adds the change to the motor's word and
+    // forms its flags, which the motor's next slot, 16 running edges later, reads. That edge
+    // follows the slot whether the unit runs in it or not, and no other motor's slot or write
+    // falls in it (the schedule's test). With three motors the words are in a block RAM, each
+    // read in the edge before its motor's slot (motor m's at phase PH_STEPDIR(m) - 1 (mod 16),
+    // which is no slot and no edge after one), and held through the edge after the slot.
+    reg  [MOTORS-1:0] wb;
+    reg  [2:0]        d_q;
+    wire [MOTORS-1:0] b_z;                     // the motor's backlog is 0 (its word is void)
+    wire [3*MOTORS-1:0] dlt;
+    wire [23:0]       bl_q;                    // the word of the motor in `wb`
+    wire              z_wb   = |(wb & b_z);
+    wire [23:0]       base   = z_wb ? 24'd0 : bl_q;
+    wire [23:0]       bl_new = base + {{21{d_q[2]}}, d_q};
+    wire [6:0]        e_wb   = near(base);
+    wire [3:0]        f_wb   = {bl_is(e_wb, d_q, 0), bl_is(e_wb, d_q, 1), bl_is(e_wb, d_q, -1),
+                                neg_after(e_wb, base[23], d_q)};
+    reg  [2:0]        d_ev;
+    integer k;
     always @(*) begin
-        state_n   = state;
-        cnt_n     = cnt;
-        step_n    = step;
-        dir_n     = dir;
-        hold_n    = hold;
-        {s_pos, s_neg, neg, bl_nz, pend, cnt_gt2} = 6'd0;
-        t_step    = 9'd0;
-        if (run) begin
-            if (!en) begin
-                state_n   = READY;
-                cnt_n     = 9'd0;
-                step_n    = 1'b0;
-                dir_n     = 1'b0;
-                hold_n    = 1'b0;
-            end else begin
-                t_step = {stpdiv + 5'd1, 4'd0};
-                s_pos  = step_in & ~dir_in;
-                s_neg  = step_in & dir_in;
-                {bl_nz, neg} = b_of(s_pos, s_neg, backlog[23], b_z, b_p1, b_m1);
-                pend   = (state == PULSE) && !step_half;
-                // cnt > 2 as a bit test (a bit above bit 1 set, or 3): LUTs, where `>` with a
-                // constant is a carry chain in synthesis (Yosys' synth_ice40)
-                cnt_gt2 = (|cnt[8:2]) | (&cnt[1:0]);
-                hold_n  = hold ? cnt_gt2 : (pend | bl_nz);
-                if (hold) begin
-                    cnt_n = cnt - 9'd1;
-                end else if (pend) begin
-                    step_n  = 1'b0;
-                    state_n = SPACE;
-                    cnt_n   = t_step;
-                end else begin
-                    state_n = READY;
-                    if (bl_nz) begin
-                        cnt_n = t_step;
-                        if (neg != dir) begin
-                            dir_n   = neg;             // C94: DIR first, STEP T later
-                            state_n = DIRSET;
-                        end else begin
-                            step_n    = step_half ? ~step : 1'b1;   // take: bl moves
-                            state_n   = PULSE;                      // toward 0 (t_d)
-                        end
-                    end
-                end
-            end
+        d_ev = 3'd0;
+        for (k = 0; k < MOTORS; k = k + 1)
+            d_ev = d_ev | ({3{ev[k]}} & dlt[3*k +: 3]);     // one-hot: an AND-OR
+    end
+    always @(posedge clk) begin
+        if (rst) begin
+            wb  <= {MOTORS{1'b0}};
+            d_q <= 3'd0;
+        end else begin
+            wb  <= ev;
+            d_q <= d_ev;
         end
     end
 
-    always @(posedge clk) begin
-        if (rst) begin
-            state   <= READY;
-            cnt     <= 9'd0;
-            hold    <= 1'b0;
-            b_z     <= 1'b1;
-            b_p1    <= 1'b0;
-            b_m1    <= 1'b0;
-            backlog <= 24'd0;
-            step    <= 1'b0;
-            dir     <= 1'b0;
-        end else begin
-            state   <= state_n;
-            cnt     <= cnt_n;
-            hold    <= hold_n;
-            if (run & en) begin : backlog_nx
-                // the same decision as the next state's above (a STEP pulse starts: take),
-                // formed here only in Step/Dir mode, so that the backlog's sum does not wait
-                // for run and en
-                reg       sp, sn, nz, ng, tk;
-                reg [2:0] dlt;
-                sp  = step_in & ~dir_in;
-                sn  = step_in & dir_in;
-                {nz, ng} = b_of(sp, sn, backlog[23], b_z, b_p1, b_m1);
-                tk  = ~hold & ~((state == PULSE) && !step_half) & nz & (ng == dir);
-                dlt = dlt_of(sp, sn, tk, dir);
-                backlog <= backlog + {{21{dlt[2]}}, dlt};
-                b_z  <= bl_is(near(backlog), dlt, 0);
-                b_p1 <= bl_is(near(backlog), dlt, 1);
-                b_m1 <= bl_is(near(backlog), dlt, -1);
-            end else if (run) begin
-                backlog <= 24'd0;
-                b_z  <= 1'b1;
-                b_p1 <= 1'b0;
-                b_m1 <= 1'b0;
+    genvar g;
+    generate
+        if (MOTORS == 1) begin : g_reg
+            reg [23:0] bl;
+            always @(posedge clk)
+                if (rst)
+                    bl <= 24'd0;
+                else if (wb[0])
+                    bl <= bl_new;
+            assign bl_q = bl;
+        end else begin : g_ram
+            reg  [1:0] w_m, r_m;
+            wire [MOTORS-1:0] rd;
+            always @(*) begin
+                w_m = 2'd0;
+                r_m = 2'd0;
+                for (k = 0; k < MOTORS; k = k + 1) begin
+                    w_m = w_m | ({2{wb[k]}} & k[1:0]);
+                    r_m = r_m | ({2{rd[k]}} & k[1:0]);
+                end
             end
-            step    <= step_n;
-            dir     <= dir_n;
+            for (g = 0; g < MOTORS; g = g + 1) begin : g_rd
+                localparam [4:0] PH = `TMC429_PH_STEPDIR(g);
+                assign rd[g] = phase == PH[3:0] - 4'd1;
+            end
+            /* verilator lint_off UNUSEDSIGNAL */
+            wire wq;                           // the motor's b_z says when the word is 0
+            /* verilator lint_on UNUSEDSIGNAL */
+            tmc429_wram #(.AW(2), .DW(24), .WMASK(4'b0111)) u_bl (
+                .clk(clk), .rst(rst), .we(|wb), .waddr(w_m), .wdata(bl_new),
+                .re(|rd), .raddr(r_m), .q(bl_q), .wq(wq));
         end
-    end
+
+        // ---- per motor: the state machine, decided in its slot alone ---------------------------
+        for (g = 0; g < MOTORS; g = g + 1) begin : g_m
+            localparam [4:0] PH = `TMC429_PH_STEPDIR(g);
+            always @(posedge clk)
+                if (rst)
+                    slot[g] <= PH[3:0] == 4'd0;
+                else
+                    slot[g] <= phase + {3'd0, run} == PH[3:0];
+
+            reg  [1:0] state;
+            reg  [3:0] rem;                  // slots the state still lasts after this one
+            reg        st, dr, st_nx, dr_nx;
+            reg        bz, bp1, bm1, bneg;   // backlog = 0, 1, -1, < 0
+            wire       s_pos = step_in[g] & ~dir_in[g];
+            wire       s_neg = step_in[g] & dir_in[g];
+            wire       nz, ng;               // b = backlog + s: b != 0, b < 0
+            assign {nz, ng} = b_of(s_pos, s_neg, bneg, bz, bp1, bm1);
+            wire       idle  = ~|rem;
+            wire       pend  = idle & (state == PULSE) & ~step_half;
+            wire       take  = idle & ~pend & nz & (ng == dr);
+            assign dlt[3*g +: 3] = dlt_of(s_pos, s_neg, take, dr);
+            assign b_z[g]    = bz;
+            assign step[g]   = st;
+            assign dir[g]    = dr;
+            assign step_n[g] = st_nx;
+            assign dir_n[g]  = dr_nx;
+
+            always @(*) begin
+                st_nx = st;
+                dr_nx = dr;
+                if (clear) begin
+                    st_nx = 1'b0;
+                    dr_nx = 1'b0;
+                end else if (ev[g]) begin
+                    if (pend)
+                        st_nx = 1'b0;
+                    else if (take)
+                        st_nx = step_half ? ~st : 1'b1;              // C93
+                    else if (idle & nz)
+                        dr_nx = ng;                                  // C94: DIR first
+                end
+            end
+
+            always @(posedge clk) begin
+                if (rst | clear) begin
+                    state <= READY;
+                    rem   <= 4'd0;
+                end else if (ev[g]) begin
+                    if (!idle)
+                        rem <= rem - 4'd1;
+                    else if (pend) begin
+                        state <= SPACE;
+                        rem   <= stpdiv;
+                    end else if (nz) begin
+                        state <= take ? PULSE : DIRSET;
+                        rem   <= stpdiv;
+                    end else
+                        state <= READY;
+                end
+                // the flags: cleared while disabled, else formed in the edge after the slot
+                if (rst | clear)
+                    {bz, bp1, bm1, bneg} <= 4'b1000;
+                else if (wb[g])
+                    {bz, bp1, bm1, bneg} <= f_wb;
+                if (rst) begin
+                    st <= 1'b0;
+                    dr <= 1'b0;
+                end else begin
+                    st <= st_nx;
+                    dr <= dr_nx;
+                end
+            end
+        end
+    endgenerate
 endmodule
 
 `default_nettype wire

@@ -322,19 +322,20 @@ module tmc429_top #(
 
     // Step/Dir (C91-C96): three motors on the TMC429, one on the TMC4210, none on the TMC428
     wire [2:0] sd_step, sd_dir, sd_step_n, sd_dir_n;
-    genvar gi;
     generate
-        for (gi = 0; gi < 3; gi = gi + 1) begin : g_sd
-            if (CHIP == 1 || (CHIP == 2 && gi == 0)) begin : g_on
-                tmc429_stepdir u_sd (
-                    .clk(clk), .rst(rst), .run(run), .en(sd_mode),
-                    .step_in(m_step[gi]), .dir_in(m_dir[gi]),
-                    .stpdiv(gconf[`TMC429_F_STPDIV]), .step_half(ifconf[`TMC429_F_STEP_HALF]),
-                    .step(sd_step[gi]), .dir(sd_dir[gi]),
-                    .step_n(sd_step_n[gi]), .dir_n(sd_dir_n[gi]));
-            end else begin : g_off
-                assign sd_step[gi] = 1'b0;    assign sd_dir[gi] = 1'b0;
-                assign sd_step_n[gi] = 1'b0;  assign sd_dir_n[gi] = 1'b0;
+        if (CHIP == 0) begin : g_sd_off
+            assign {sd_step, sd_dir, sd_step_n, sd_dir_n} = 12'd0;
+        end else begin : g_sd
+            localparam SDM = (CHIP == 1) ? 3 : 1;
+            tmc429_stepdir #(.MOTORS(SDM)) u_sd (
+                .clk(clk), .rst(rst), .run(run), .en(sd_mode), .phase(prescaler[3:0]),
+                .step_in(m_step[SDM-1:0]), .dir_in(m_dir[SDM-1:0]),
+                .stpdiv(gconf[`TMC429_F_STPDIV]), .step_half(ifconf[`TMC429_F_STEP_HALF]),
+                .step(sd_step[SDM-1:0]), .dir(sd_dir[SDM-1:0]),
+                .step_n(sd_step_n[SDM-1:0]), .dir_n(sd_dir_n[SDM-1:0]));
+            if (SDM < 3) begin : g_tie
+                assign sd_step[2:SDM] = 0;   assign sd_dir[2:SDM] = 0;
+                assign sd_step_n[2:SDM] = 0; assign sd_dir_n[2:SDM] = 0;
             end
         end
     endgenerate

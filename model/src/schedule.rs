@@ -17,6 +17,12 @@ pub const PHASE_SNAPSHOT: [u32; 3] = [0, 7, 14];
 pub const PHASE_COMMIT: [u32; 3] = [14, 21, 28];
 pub const PHASE_RAMP: [u32; 3] = [16, 23, 30];
 pub const PHASE_PULSE: [u32; 3] = [17, 24, 31];
+/// The phase of the edge in which the Step/Dir unit takes motor m's step (C95): the motor steps
+/// in the edge after its pulse tick (C53), and its step flag, the old state of the edge after
+/// that, is read there. A pulse, space or DIR set-up lasts 16·(1 + STPDIV) edges (C93, C94), so
+/// each change of the motor's Step/Dir state falls at this phase or 16 after it, and the RTL's
+/// one Step/Dir unit serves the motors in turn in those slots (`rtl/tmc429_stepdir.v`).
+pub const PHASE_STEPDIR: [u32; 3] = [(PHASE_PULSE[0] + 2) % 32, (PHASE_PULSE[1] + 2) % 32, (PHASE_PULSE[2] + 2) % 32];
 /// The phase before each condition slot: the edge that takes the slot's conditions (C52).
 pub const PHASE_SAMPLE: [u32; 3] = [PHASE_COMMIT[0] - 1, PHASE_COMMIT[1] - 1, PHASE_COMMIT[2] - 1];
 

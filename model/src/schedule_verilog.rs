@@ -7,7 +7,7 @@
 //! constant for a constant m (a genvar or a localparam).
 
 use crate::regmap_verilog::define;
-use crate::schedule::{PHASE_COMMIT, PHASE_PULSE, PHASE_RAMP, PHASE_SNAPSHOT};
+use crate::schedule::{PHASE_COMMIT, PHASE_PULSE, PHASE_RAMP, PHASE_SNAPSHOT, PHASE_STEPDIR};
 
 /// The command that writes the header.
 pub const REGENERATE: &str = "tmc429 regmap --format verilog-schedule > rtl/tmc429_schedule.vh";
@@ -36,6 +36,7 @@ pub fn header() -> String {
     define(&mut s, "TMC429_PH_COMMIT(m)", &per_motor(&PHASE_COMMIT), "motor m's target velocity committed in this edge");
     define(&mut s, "TMC429_PH_RAMP(m)", &per_motor(&PHASE_RAMP), "motor m's ramp tick in a ramp frame");
     define(&mut s, "TMC429_PH_PULSE(m)", &per_motor(&PHASE_PULSE), "motor m's pulse tick in a pulse frame");
+    define(&mut s, "TMC429_PH_STEPDIR(m)", &per_motor(&PHASE_STEPDIR), "motor m's Step/Dir slot (and 16 after it)");
     s += "\n`endif // TMC429_SCHEDULE_VH\n";
     s
 }
@@ -54,6 +55,7 @@ mod tests {
         assert_eq!(value(&h, "TMC429_PH_COMMIT(m)"), Some("((m) == 0 ? 5'd14 : (m) == 1 ? 5'd21 : 5'd28)"));
         assert_eq!(value(&h, "TMC429_PH_RAMP(m)"), Some("((m) == 0 ? 5'd16 : (m) == 1 ? 5'd23 : 5'd30)"));
         assert_eq!(value(&h, "TMC429_PH_PULSE(m)"), Some("((m) == 0 ? 5'd17 : (m) == 1 ? 5'd24 : 5'd31)"));
+        assert_eq!(value(&h, "TMC429_PH_STEPDIR(m)"), Some("((m) == 0 ? 5'd19 : (m) == 1 ? 5'd26 : 5'd1)"));
     }
 
     /// The RTL's pipelines rest on the lanes' shape: every lane VT_CYCLES from its snapshot to
@@ -69,6 +71,21 @@ mod tests {
             assert!(PHASE_RAMP[m] >= PHASE_COMMIT[m] + 2, "motor {m}");
             assert!(PHASE_PULSE[m] < 32, "motor {m}");
             assert!(PHASE_RAMP[m] >= 2 && PHASE_PULSE[m] >= 2, "motor {m}");
+        }
+    }
+
+    /// The Step/Dir unit's slots (the phase PHASE_STEPDIR[m] and 16 after it) are motor m's
+    /// alone, and the edge before each, which reads the motor's backlog word, is no motor's
+    /// slot: one backlog adder and one RAM port serve the three motors (`rtl/tmc429_stepdir.v`).
+    #[test]
+    fn the_step_dir_slots_are_apart() {
+        assert_eq!(PHASE_STEPDIR, [19, 26, 1]);
+        let half = |p: u32| p % 16;
+        for m in 0..3 {
+            for n in 0..3 {
+                assert!(m == n || half(PHASE_STEPDIR[m]) != half(PHASE_STEPDIR[n]), "motors {m}, {n}");
+                assert_ne!(half(PHASE_STEPDIR[m] + 15), half(PHASE_STEPDIR[n]), "motors {m}, {n}");
+            }
         }
     }
 }

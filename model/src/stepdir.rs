@@ -83,7 +83,8 @@ impl StepDir {
         }
         let steps = motors[0].step as u8 | (motors[1].step as u8) << 1 | (motors[2].step as u8) << 2;
         if steps == 0 && (self.busy == 0 || now < self.next) {
-            // Only counters run: cnt[i] is implicit until `next` (the RTL decrements it).
+            // Only counters run: cnt[i] is implicit until `next` (the RTL counts the motor's
+            // Step/Dir slots, 16 edges apart).
             return false;
         }
         self.catch_up(now, n);
@@ -107,7 +108,7 @@ impl StepDir {
     }
 
     /// Brings the implicit counters up to date before edge `now`: cnt[i] −= (now − 1 − last)
-    /// for the busy motors (the RTL decrements them in every edge).
+    /// for the busy motors (the RTL counts the 16-edge slots they span).
     #[inline]
     fn catch_up(&mut self, now: u64, n: usize) {
         let elapsed = now.wrapping_sub(self.last).wrapping_sub(1);
