@@ -131,7 +131,8 @@ module tmc429_stepdir #(
     wire [MOTORS-1:0] b_z;                     // the motor's backlog is 0 (its word is void)
     wire [3*MOTORS-1:0] dlt;
     wire [23:0]       bl_q;                    // the word of the motor in `wb`
-    wire              z_wb   = |(wb & b_z);
+    // one motor's register is cleared with its flags; a RAM word is void while b_z holds
+    wire              z_wb   = (MOTORS > 1) & |(wb & b_z);
     wire [23:0]       base   = z_wb ? 24'd0 : bl_q;
     wire [23:0]       bl_new = base + {{21{d_q[2]}}, d_q};
     wire [6:0]        e_wb   = near(base);
@@ -159,7 +160,7 @@ module tmc429_stepdir #(
         if (MOTORS == 1) begin : g_reg
             reg [23:0] bl;
             always @(posedge clk)
-                if (rst)
+                if (rst | clear)
                     bl <= 24'd0;
                 else if (wb[0])
                     bl <= bl_new;
