@@ -188,9 +188,12 @@ module tmc429_chain (
     // ---- cover (C85): positions cover_pos <= k < cover_pos + len carry data[len-1-(k-pos)];
     // decided at cnt = 2 (bits does not change before the LOW entry). With the end
     // e = pos + len latched, the two bounds are compared side by side and the index
-    // len - 1 - (k - pos) = e - 1 - k is one sum, e + ~k (mod 32)
-    wire       cov_in  = cover_busy & (bits >= {1'b0, cov_pos}) & (bits < cov_end);
-    wire [4:0] cov_i   = cov_end[4:0] + ~bits[4:0];
+    // len - 1 - (k - pos) = e - 1 - k is one sum, e + ~k (mod 32). The bounds' comparison and
+    // the index are registered at cnt = 3 with the LUT cell's read (`rd_lut`: the edge before,
+    // in the same state; bits and the latch do not change in between), so that the selection
+    // of the datagram's bit starts at flip-flops
+    reg        cov_hit;
+    reg  [4:0] cov_i;
     wire       bit_now = cov_sel ? cov_bit : sig_bit;
 
     // ---- requests (C83) ---------------------------------------------------------------------
@@ -349,11 +352,14 @@ module tmc429_chain (
             snap_dir  <= {snap_dir[2], snap_dir[2:1]};
             snap_step <= {snap_step[2], snap_step[2:1]};
         end
-        if (run & spi_mode & rd_lut)
-            cfg <= ram_q;
+        if (run & spi_mode & rd_lut) begin
+            cfg     <= ram_q;
+            cov_hit <= (bits >= {1'b0, cov_pos}) & (bits < cov_end);
+            cov_i   <= cov_end[4:0] + ~bits[4:0];
+        end
         if (run & spi_mode & pre_dac) begin
             dac     <= dac_nx;
-            cov_sel <= cov_in;
+            cov_sel <= cover_busy & cov_hit;
             cov_bit <= cov_data[cov_i];
         end
     end
