@@ -126,32 +126,47 @@ module tmc429_stepdir #(
     // falls in it (the schedule's test). With three motors the words are in a block RAM, each
     // read in the edge before its motor's slot (motor m's at phase PH_STEPDIR(m) - 1 (mod 16),
     // which is no slot and no edge after one), and held through the edge after the slot.
+    // The decisions and the flags are formed only in the edges that take them (docs/rtl.md,
+    // "Logic in its slot").
     reg  [MOTORS-1:0] wb;
     reg  [2:0]        d_q;
-    wire [MOTORS-1:0] b_z;                     // the motor's backlog is 0 (its word is void)
-    wire [3*MOTORS-1:0] dlt;
+    reg  [MOTORS-1:0] b_z, b_p1, b_m1, b_neg;  // backlog = 0 (its word void), 1, -1, < 0
+    wire [3*MOTORS-1:0] dlt;                   // a motor's change in its slot, else 0
     wire [23:0]       bl_q;                    // the word of the motor in `wb`
     // one motor's register is cleared with its flags; a RAM word is void while b_z holds
     wire              z_wb   = (MOTORS > 1) & |(wb & b_z);
     wire [23:0]       base   = z_wb ? 24'd0 : bl_q;
     wire [23:0]       bl_new = base + {{21{d_q[2]}}, d_q};
-    wire [6:0]        e_wb   = near(base);
-    wire [3:0]        f_wb   = {bl_is(e_wb, d_q, 0), bl_is(e_wb, d_q, 1), bl_is(e_wb, d_q, -1),
-                                neg_after(e_wb, base[23], d_q)};
-    reg  [2:0]        d_ev;
     integer k;
-    always @(*) begin
-        d_ev = 3'd0;
-        for (k = 0; k < MOTORS; k = k + 1)
-            d_ev = d_ev | ({3{ev[k]}} & dlt[3*k +: 3]);     // one-hot: an AND-OR
-    end
     always @(posedge clk) begin
         if (rst) begin
             wb  <= {MOTORS{1'b0}};
             d_q <= 3'd0;
         end else begin
             wb  <= ev;
-            d_q <= d_ev;
+            if (|ev) begin : change
+                reg [2:0] d;
+                d = 3'd0;
+                for (k = 0; k < MOTORS; k = k + 1)
+                    d = d | dlt[3*k +: 3];               // 0 but for the slot's motor
+                d_q <= d;
+            end
+        end
+        if (rst | clear) begin
+            b_z   <= {MOTORS{1'b1}};
+            b_p1  <= {MOTORS{1'b0}};
+            b_m1  <= {MOTORS{1'b0}};
+            b_neg <= {MOTORS{1'b0}};
+        end else if (|wb) begin : flags
+            reg [6:0] e;
+            e = near(base);
+            for (k = 0; k < MOTORS; k = k + 1)
+                if (wb[k]) begin
+                    b_z[k]   <= bl_is(e, d_q, 0);
+                    b_p1[k]  <= bl_is(e, d_q, 1);
+                    b_m1[k]  <= bl_is(e, d_q, -1);
+                    b_neg[k] <= neg_after(e, base[23], d_q);
+                end
         end
     end
 
@@ -197,67 +212,67 @@ module tmc429_stepdir #(
                 else
                     slot[g] <= phase + {3'd0, run} == PH[3:0];
 
-            reg  [1:0] state;
-            reg  [3:0] rem;                  // slots the state still lasts after this one
+            reg  [1:0] state, state_nx;
+            reg  [3:0] rem, rem_nx;          // slots the state still lasts after this one
             reg        st, dr, st_nx, dr_nx;
-            reg        bz, bp1, bm1, bneg;   // backlog = 0, 1, -1, < 0
-            wire       s_pos = step_in[g] & ~dir_in[g];
-            wire       s_neg = step_in[g] & dir_in[g];
-            wire       nz, ng;               // b = backlog + s: b != 0, b < 0
-            assign {nz, ng} = b_of(s_pos, s_neg, bneg, bz, bp1, bm1);
-            wire       idle  = ~|rem;
-            wire       pend  = idle & (state == PULSE) & ~step_half;
-            wire       take  = idle & ~pend & nz & (ng == dr);
-            assign dlt[3*g +: 3] = dlt_of(s_pos, s_neg, take, dr);
-            assign b_z[g]    = bz;
+            reg  [2:0] d;
+            reg        s_pos, s_neg, nz, ng, idle, pend, take;   // the slot's decision
+            assign dlt[3*g +: 3] = d;
             assign step[g]   = st;
             assign dir[g]    = dr;
             assign step_n[g] = st_nx;
             assign dir_n[g]  = dr_nx;
 
             always @(*) begin
-                st_nx = st;
-                dr_nx = dr;
+                st_nx    = st;
+                dr_nx    = dr;
+                state_nx = state;
+                rem_nx   = rem;
+                d        = 3'd0;
+                {s_pos, s_neg, nz, ng, idle, pend, take} = 7'd0;
                 if (clear) begin
-                    st_nx = 1'b0;
-                    dr_nx = 1'b0;
+                    st_nx    = 1'b0;
+                    dr_nx    = 1'b0;
+                    state_nx = READY;
+                    rem_nx   = 4'd0;
                 end else if (ev[g]) begin
-                    if (pend)
-                        st_nx = 1'b0;
-                    else if (take)
-                        st_nx = step_half ? ~st : 1'b1;              // C93
-                    else if (idle & nz)
-                        dr_nx = ng;                                  // C94: DIR first
+                    s_pos = step_in[g] & ~dir_in[g];
+                    s_neg = step_in[g] & dir_in[g];
+                    // b = backlog + s: b != 0, b < 0
+                    {nz, ng} = b_of(s_pos, s_neg, b_neg[g], b_z[g], b_p1[g], b_m1[g]);
+                    idle = ~|rem;
+                    pend = idle & (state == PULSE) & ~step_half;
+                    take = idle & ~pend & nz & (ng == dr);
+                    d    = dlt_of(s_pos, s_neg, take, dr);
+                    if (!idle)
+                        rem_nx = rem - 4'd1;
+                    else if (pend) begin
+                        st_nx    = 1'b0;
+                        state_nx = SPACE;
+                        rem_nx   = stpdiv;
+                    end else if (nz) begin
+                        if (take)
+                            st_nx = step_half ? ~st : 1'b1;          // C93
+                        else
+                            dr_nx = ng;                              // C94: DIR first
+                        state_nx = take ? PULSE : DIRSET;
+                        rem_nx   = stpdiv;
+                    end else
+                        state_nx = READY;
                 end
             end
 
             always @(posedge clk) begin
-                if (rst | clear) begin
+                if (rst) begin
                     state <= READY;
                     rem   <= 4'd0;
-                end else if (ev[g]) begin
-                    if (!idle)
-                        rem <= rem - 4'd1;
-                    else if (pend) begin
-                        state <= SPACE;
-                        rem   <= stpdiv;
-                    end else if (nz) begin
-                        state <= take ? PULSE : DIRSET;
-                        rem   <= stpdiv;
-                    end else
-                        state <= READY;
-                end
-                // the flags: cleared while disabled, else formed in the edge after the slot
-                if (rst | clear)
-                    {bz, bp1, bm1, bneg} <= 4'b1000;
-                else if (wb[g])
-                    {bz, bp1, bm1, bneg} <= f_wb;
-                if (rst) begin
-                    st <= 1'b0;
-                    dr <= 1'b0;
+                    st    <= 1'b0;
+                    dr    <= 1'b0;
                 end else begin
-                    st <= st_nx;
-                    dr <= dr_nx;
+                    state <= state_nx;
+                    rem   <= rem_nx;
+                    st    <= st_nx;
+                    dr    <= dr_nx;
                 end
             end
         end
