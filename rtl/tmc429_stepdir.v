@@ -124,8 +124,9 @@ module tmc429_stepdir #(
     // forms its flags, which the motor's next slot, 16 running edges later, reads. That edge
     // follows the slot whether the unit runs in it or not, and no other motor's slot or write
     // falls in it (the schedule's test). With three motors the words are in a block RAM, each
-    // read in the edge before its motor's slot (motor m's at phase PH_STEPDIR(m) - 1 (mod 16),
-    // which is no slot and no edge after one), and held through the edge after the slot.
+    // read in the edge before its motor's slot (at phase PH_STEPDIR(m) - 1 (mod 16), which is
+    // no slot) and held through the edge after the slot: a read in that edge (motor 0's read
+    // is the edge after motor 2's slot) gives its word only after it.
     // The decisions and the flags are formed only in the edges that take them (docs/rtl.md,
     // "Logic in its slot").
     reg  [MOTORS-1:0] wb;

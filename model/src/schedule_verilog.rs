@@ -75,8 +75,9 @@ mod tests {
     }
 
     /// The Step/Dir unit's slots (the phase PHASE_STEPDIR[m] and 16 after it) are motor m's
-    /// alone, and the edge before each, which reads the motor's backlog word, is no motor's
-    /// slot: one backlog adder and one RAM port serve the three motors (`rtl/tmc429_stepdir.v`).
+    /// alone, and neither the edge before each, which reads the motor's backlog word, nor the
+    /// edge after it, which adds the slot's change to the word, is a motor's slot: one backlog
+    /// adder and one RAM port serve the three motors (`rtl/tmc429_stepdir.v`).
     #[test]
     fn the_step_dir_slots_are_apart() {
         assert_eq!(PHASE_STEPDIR, [19, 26, 1]);
@@ -85,6 +86,8 @@ mod tests {
             for n in 0..3 {
                 assert!(m == n || half(PHASE_STEPDIR[m]) != half(PHASE_STEPDIR[n]), "motors {m}, {n}");
                 assert_ne!(half(PHASE_STEPDIR[m] + 15), half(PHASE_STEPDIR[n]), "motors {m}, {n}");
+                assert_ne!(half(PHASE_STEPDIR[m] + 1), half(PHASE_STEPDIR[n]), "motors {m}, {n}");
+                assert!(m == n || half(PHASE_STEPDIR[m] + 1) != half(PHASE_STEPDIR[n] + 1), "motors {m}, {n}");
             }
         }
     }
