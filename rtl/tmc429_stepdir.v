@@ -96,18 +96,20 @@ module tmc429_stepdir #(
     endfunction
 
     // the new backlog is negative: with the old one beyond -3..3 its sign (|dlt| <= 2), else
-    // v + dlt < 0 for the v it is; no carry chain
+    // v + dlt < 0 for the v it is (e[v + 3]); a table, no sum
     function neg_after;
         input [6:0] ev;
         input       bl_neg;
         input [2:0] d;
-        integer v, dv;
         begin
-            dv        = $signed({{29{d[2]}}, d});
-            neg_after = ~|ev & bl_neg;
-            for (v = -3; v <= 3; v = v + 1)
-                if (v + dv < 0)
-                    neg_after = neg_after | ev[v + 3];
+            case (d)
+            3'd1:    neg_after = |ev[1:0];           // v < -1
+            3'd2:    neg_after = ev[0];              // v < -2
+            3'd7:    neg_after = |ev[3:0];           // v < 1
+            3'd6:    neg_after = |ev[4:0];           // v < 2
+            default: neg_after = |ev[2:0];           // v < 0
+            endcase
+            neg_after = neg_after | (~|ev & bl_neg);
         end
     endfunction
 
