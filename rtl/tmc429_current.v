@@ -27,14 +27,15 @@ module tmc429_current (
     reg [7:0] v0_count;
     reg [1:0] sel;
 
-    // |a_actual| > a_threshold without forming |a_actual|: a >= 0: thr - a < 0; a < 0:
-    // -a > thr, i.e. a + thr < 0 (thr <= 1023, so both fit 12 bits); the sign selects
-    /* verilator lint_off UNUSEDSIGNAL */     // only the signs of the sums are used
-    wire [11:0] d_pos = {2'b00, a_threshold[9:0]} - a_actual;
-    wire [11:0] d_neg = a_actual + {2'b00, a_threshold[9:0]};
+    // |a_actual| > a_threshold without forming |a_actual|, one carry chain whose sign is the
+    // answer (thr <= 1023 in 12 bits): a >= 0: thr - a = thr + ~a + 1 is negative; a < 0:
+    // -a > thr, i.e. thr + a is negative. Both are thr + (a ^ {12{~s}}) + ~s with s = a's sign
+    /* verilator lint_off UNUSEDSIGNAL */     // only the sign of the sum is used
+    wire        a_pos = ~a_actual[11];
+    wire [11:0] d     = {2'b00, a_threshold[9:0]} + (a_actual ^ {12{a_pos}}) + {11'd0, a_pos};
     /* verilator lint_on UNUSEDSIGNAL */
     // Table 8-2: a_threshold > 1023 always selects is_aleat
-    wire        agt   = ~a_threshold[10] & (a_actual[11] ? d_neg[11] : d_pos[11]);
+    wire        agt   = ~a_threshold[10] & d[11];
 
     // The tick loads both registers, its enable the registered tick alone: V != 0, the last
     // input, selects between the next states of a moving and of a resting motor in front of

@@ -117,6 +117,9 @@ module tmc429_stepdir #(
     // `slot` is a register formed one edge ahead (the phase after an edge is phase + run), so
     // that the decisions start at flip-flops
     reg  [MOTORS-1:0] slot;
+    /* verilator lint_off UNUSEDSIGNAL */      // one motor: its backlog is a register
+    wire [MOTORS-1:0] rd;                      // motor m's backlog word is read in this edge
+    /* verilator lint_on UNUSEDSIGNAL */
     wire [MOTORS-1:0] ev    = {MOTORS{run & en}} & slot;
     wire              clear = run & ~en;       // held in the reset state (C91)
 
@@ -185,7 +188,6 @@ module tmc429_stepdir #(
             assign bl_q = bl;
         end else begin : g_ram
             reg  [1:0] w_m, r_m;
-            wire [MOTORS-1:0] rd;
             always @(*) begin
                 w_m = 2'd0;
                 r_m = 2'd0;
@@ -193,10 +195,6 @@ module tmc429_stepdir #(
                     w_m = w_m | ({2{wb[k]}} & k[1:0]);
                     r_m = r_m | ({2{rd[k]}} & k[1:0]);
                 end
-            end
-            for (g = 0; g < MOTORS; g = g + 1) begin : g_rd
-                localparam [4:0] PH = `TMC429_PH_STEPDIR(g);
-                assign rd[g] = phase == PH[3:0] - 4'd1;
             end
             /* verilator lint_off UNUSEDSIGNAL */
             wire wq;                           // the motor's b_z says when the word is 0
@@ -209,11 +207,15 @@ module tmc429_stepdir #(
         // ---- per motor: the state machine, decided in its slot alone ---------------------------
         for (g = 0; g < MOTORS; g = g + 1) begin : g_m
             localparam [4:0] PH = `TMC429_PH_STEPDIR(g);
+            // the edge before the slot, which reads the motor's backlog word; the slot is the
+            // edge after it with run, that edge itself without: run selects after the two
+            // comparisons of the phase
+            assign rd[g] = phase == PH[3:0] - 4'd1;
             always @(posedge clk)
                 if (rst)
                     slot[g] <= PH[3:0] == 4'd0;
                 else
-                    slot[g] <= phase + {3'd0, run} == PH[3:0];
+                    slot[g] <= run ? rd[g] : phase == PH[3:0];
 
             reg  [1:0] state, state_nx;
             reg  [3:0] rem, rem_nx;          // slots the state still lasts after this one
