@@ -132,13 +132,18 @@ module tmc429_stepdir #(
     // read in the edge before its motor's slot (at phase PH_STEPDIR(m) - 1 (mod 16), which is
     // no slot) and held through the edge after the slot: a read in that edge (motor 0's read
     // is the edge after motor 2's slot) gives its word only after it.
+    // The word and the motor's b_z hold from the slot through the edge after it, so the
+    // comparisons of the flags (`near`, the sign) are formed in the slot and registered (`e_q`,
+    // `bn_q`): the edge after the slot takes them from flip-flops, not from the RAM's read port.
     // The decisions and the flags are formed only in the edges that take them (docs/rtl.md,
     // "Logic in its slot").
     reg  [MOTORS-1:0] wb;
     reg  [2:0]        d_q;
     reg  [MOTORS-1:0] b_z, b_p1, b_m1, b_neg;  // backlog = 0 (its word void), 1, -1, < 0
     wire [3*MOTORS-1:0] dlt;                   // a motor's change in its slot, else 0
-    wire [23:0]       bl_q;                    // the word of the motor in `wb`
+    wire [23:0]       bl_q;                    // the word of the motor in its slot and after it
+    reg  [6:0]        e_q;                     // near() of that motor's backlog, formed in its slot
+    reg               bn_q;                    // its sign
     // one motor's register is cleared with its flags; a RAM word is void while b_z holds
     wire              z_wb   = (MOTORS > 1) & |(wb & b_z);
     wire [23:0]       base   = z_wb ? 24'd0 : bl_q;
@@ -148,14 +153,20 @@ module tmc429_stepdir #(
         if (rst) begin
             wb  <= {MOTORS{1'b0}};
             d_q <= 3'd0;
+            e_q <= 7'd0;
+            bn_q <= 1'b0;
         end else begin
             wb  <= ev;
             if (|ev) begin : change
-                reg [2:0] d;
+                reg [2:0]  d;
+                reg [23:0] b;
                 d = 3'd0;
                 for (k = 0; k < MOTORS; k = k + 1)
                     d = d | dlt[3*k +: 3];               // 0 but for the slot's motor
-                d_q <= d;
+                b = ((MOTORS > 1) & |(ev & b_z)) ? 24'd0 : bl_q;
+                d_q  <= d;
+                e_q  <= near(b);
+                bn_q <= b[23];
             end
         end
         if (rst | clear) begin
@@ -163,15 +174,13 @@ module tmc429_stepdir #(
             b_p1  <= {MOTORS{1'b0}};
             b_m1  <= {MOTORS{1'b0}};
             b_neg <= {MOTORS{1'b0}};
-        end else if (|wb) begin : flags
-            reg [6:0] e;
-            e = near(base);
+        end else if (|wb) begin
             for (k = 0; k < MOTORS; k = k + 1)
                 if (wb[k]) begin
-                    b_z[k]   <= bl_is(e, d_q, 0);
-                    b_p1[k]  <= bl_is(e, d_q, 1);
-                    b_m1[k]  <= bl_is(e, d_q, -1);
-                    b_neg[k] <= neg_after(e, base[23], d_q);
+                    b_z[k]   <= bl_is(e_q, d_q, 0);
+                    b_p1[k]  <= bl_is(e_q, d_q, 1);
+                    b_m1[k]  <= bl_is(e_q, d_q, -1);
+                    b_neg[k] <= neg_after(e_q, bn_q, d_q);
                 end
         end
     end
