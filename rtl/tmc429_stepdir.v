@@ -132,9 +132,10 @@ module tmc429_stepdir #(
     // read in the edge before its motor's slot (at phase PH_STEPDIR(m) - 1 (mod 16), which is
     // no slot) and held through the edge after the slot: a read in that edge (motor 0's read
     // is the edge after motor 2's slot) gives its word only after it.
-    // The word and the motor's b_z hold from the slot through the edge after it, so the
-    // comparisons of the flags (`near`, the sign) are formed in the slot and registered (`e_q`,
-    // `bn_q`): the edge after the slot takes them from flip-flops, not from the RAM's read port.
+    // The word and the motor's b_z hold from the slot through the edge after it, so with three
+    // motors the comparisons of the flags (`near`, the sign) are formed in the slot and
+    // registered (`e_q`, `bn_q`): the edge after the slot takes them from flip-flops, not from
+    // the RAM's read port. One motor's backlog is a register, formed there from it.
     // The decisions and the flags are formed only in the edges that take them (docs/rtl.md,
     // "Logic in its slot").
     reg  [MOTORS-1:0] wb;
@@ -163,10 +164,12 @@ module tmc429_stepdir #(
                 d = 3'd0;
                 for (k = 0; k < MOTORS; k = k + 1)
                     d = d | dlt[3*k +: 3];               // 0 but for the slot's motor
-                b = ((MOTORS > 1) & |(ev & b_z)) ? 24'd0 : bl_q;
-                d_q  <= d;
-                e_q  <= near(b);
-                bn_q <= b[23];
+                d_q <= d;
+                if (MOTORS > 1) begin
+                    b = |(ev & b_z) ? 24'd0 : bl_q;   // the word is void while b_z holds
+                    e_q  <= near(b);
+                    bn_q <= b[23];
+                end
             end
         end
         if (rst | clear) begin
@@ -174,13 +177,17 @@ module tmc429_stepdir #(
             b_p1  <= {MOTORS{1'b0}};
             b_m1  <= {MOTORS{1'b0}};
             b_neg <= {MOTORS{1'b0}};
-        end else if (|wb) begin
+        end else if (|wb) begin : flags
+            reg [6:0] e;
+            reg       bn;
+            e  = (MOTORS > 1) ? e_q : near(base);
+            bn = (MOTORS > 1) ? bn_q : base[23];
             for (k = 0; k < MOTORS; k = k + 1)
                 if (wb[k]) begin
-                    b_z[k]   <= bl_is(e_q, d_q, 0);
-                    b_p1[k]  <= bl_is(e_q, d_q, 1);
-                    b_m1[k]  <= bl_is(e_q, d_q, -1);
-                    b_neg[k] <= neg_after(e_q, bn_q, d_q);
+                    b_z[k]   <= bl_is(e, d_q, 0);
+                    b_p1[k]  <= bl_is(e, d_q, 1);
+                    b_m1[k]  <= bl_is(e, d_q, -1);
+                    b_neg[k] <= neg_after(e, bn, d_q);
                 end
         end
     end
