@@ -102,8 +102,11 @@ module tmc429_ramp #(
                                      // the next edge with run = 1 (C53)
     reg stop_hard;                   // registered hard stop action (C52, C61)
     // the conditions of the edge before, which the condition slot applies (C52): the stop
-    // actions and the latch (and the outputs c_stop, c_sel, c_tol)
-    reg c_hard, c_soft, c_latch;
+    // actions and the latch (and the outputs c_stop, c_sel, c_tol). The hard stop action is
+    // kept as its terms, combined in the slot: the stop at target's (c_eq: x_actual =
+    // x_target, c_slow: RAMP/SOFT mode and |V|>>8 <= v_min) and the switch's (c_hsw), so that
+    // the 24-bit comparison x_actual = x_target ends in a flip-flop, not in further LUTs
+    reg c_eq, c_slow, c_hsw, c_soft, c_latch;
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -166,10 +169,10 @@ module tmc429_ramp #(
 
     // ---- stop at target (C52) ------------------------------------------------------------------
     assign xeqt   = x_actual == x_target;
-    // at_stop: RAMP or SOFT mode, at the target, |V|>>8 <= v_min (no borrow of v_min - |V|>>8)
-    function at_stop;
+    // the stop at target but for x_actual = x_target: RAMP or SOFT mode, |V|>>8 <= v_min (no
+    // borrow of v_min - |V|>>8)
+    function slow;
         input        rs;     // RAMP_MODE or SOFT_MODE
-        input        eq;
         input [10:0] vmin, mx;
         input        mc;
         /* verilator lint_off UNUSEDSIGNAL */
@@ -177,7 +180,7 @@ module tmc429_ramp #(
         /* verilator lint_on UNUSEDSIGNAL */
         begin
             d       = {1'b0, vmin, 1'b0} - {1'b0, mx, mc};
-            at_stop = rs & eq & ~d[12];
+            slow    = rs & ~d[12];
         end
     endfunction
 
@@ -242,7 +245,8 @@ module tmc429_ramp #(
             ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
             stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
-            c_hard <= 1'b0;     c_soft <= 1'b0;     c_sel <= 1'b0;   c_latch <= 1'b0;
+            c_eq <= 1'b0;       c_slow <= 1'b0;     c_hsw <= 1'b0;
+            c_soft <= 1'b0;     c_sel <= 1'b0;      c_latch <= 1'b0;
             c_stop <= 1'b0;     c_tol <= 1'b0;
             step_due <= 1'b0;   step_neg <= 1'b0;
             pend_v <= 1'b0;     pend_a <= 1'b0;
@@ -254,7 +258,9 @@ module tmc429_ramp #(
                 tol      = win(x_actual, tol_m1);
                 pre      = pre_stop(ref_conf, sw_l, sw_r, v_neg, v_zero, vt);
                 // with SOFT_STOP the switch stop is the soft action, without it the hard one
-                c_hard  <= at_stop(~rm[1], xeqt, v_min, v_mx, v_mc) | (pre & ~soft_sw & ~tol);
+                c_eq    <= xeqt;
+                c_slow  <= slow(~rm[1], v_min, v_mx, v_mc);
+                c_hsw   <= pre & ~soft_sw & ~tol;
                 c_soft  <= pre & soft_sw & ~tol;
                 c_sel   <= sel;
                 c_stop  <= pre & ~tol;
@@ -264,7 +270,7 @@ module tmc429_ramp #(
             if (run) begin
                 if (cond_tick) begin
                     ref_prev <= c_sel;
-                    stop_hard <= c_hard;
+                    stop_hard <= (c_eq & c_slow) | c_hsw;
                     stop_soft <= c_soft;
                     if (c_latch) begin
                         x_latched <= x_actual;
