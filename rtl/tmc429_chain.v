@@ -103,14 +103,11 @@ module tmc429_chain (
     wire [7:0] wd     = clk2_div_wd;
     wire [8:0] nx_lo  = {1'b0, wd} + 9'd1;
     wire [8:0] nx_hi  = (wd >= 8'd7) ? nx_lo : (9'd15 - {1'b0, wd});
-    // t_lo + t_hi: bit 0 of both is ~wd[0] (nx_hi's bit 0 is nx_lo's in both cases), so the
-    // sum's bit 0 is 0 and nx_lo[0] is the carry into bit 1, added to 1 in bit 0 instead of
-    // to itself (no carry cell with one net on both operands: scripts/carry-check)
-    /* verilator lint_off UNUSEDSIGNAL */     // bit 0: nx_lo[0] + 1, its sum unused
-    wire [9:0] nx_s   = {1'b0, nx_lo[8:1], nx_lo[0]} + {1'b0, nx_hi[8:1], 1'b1};
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [9:0] nx_p   = {nx_s[9:1], 1'b0};
-    wire [9:0] nx_gap = (wd <= 8'd7) ? nx_p : ({1'b0, nx_lo} + {nx_lo, 1'b0});
+    // t_lo + t_hi is 16 up to clk2_div 7 ((clk2_div + 1) + (15 - clk2_div)) and 2·t_lo above;
+    // the gap 3·t_lo = 4·clk2_div + 3 - clk2_div above 7, one carry chain from the written
+    // data (not t_lo's sum added to itself shifted: a carry chain behind a carry chain)
+    wire [9:0] nx_p   = (wd >= 8'd7) ? {nx_lo, 1'b0} : 10'd16;
+    wire [9:0] nx_gap = (wd <= 8'd7) ? 10'd16 : ({wd, 2'b11} - {2'b00, wd});
     reg  [8:0] t_lo, t_hi;
     reg  [9:0] t_p, t_gap;
     // the counter's cnt > 1 after a load: t_hi >= 8 (clk2_div >= 7: clk2_div + 1, else
@@ -144,7 +141,13 @@ module tmc429_chain (
     reg [6:0]  cov_end;                 // cover_pos + cover_len (length at most 24)
     reg [23:0] cov_data;
     reg [9:0]  cupd0, cupd1, cupd2;
-    reg        cover_busy_n, dgw_busy_n, start, shift;
+    reg        cover_busy_n, dgw_busy_n, start;
+    // the HIGH state's last edge with an NxM bit (state HIGH, cnt <= 1, nxm): a register formed
+    // with the next state, so that the NxM gap's shift of the snapshot (below) is an AND of
+    // flip-flops and the snapshot's enable leaves the next-state logic (the requests and the
+    // start) out of its cone
+    reg        hi_nxm;
+    wire       hi_nxm_n;
     // can_start = (state == IDLE) | (CSOFF with cnt <= 1): a datagram may start in this edge.
     // A register formed with the next state (HOLD enters CSOFF with cnt = P >= 16), so that
     // `start` is request AND a flip-flop.
@@ -224,7 +227,7 @@ module tmc429_chain (
         req_n = req;  stepped_n = stepped;  nxm_n = nxm;
         cover_busy_n = cover_busy;  dgw_busy_n = dgw_busy;  readback_n = readback;
         cs_ns = cs;  sck_ns = sck;  sdo_n = sdo;
-        start = 1'b0;  shift = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
+        start = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
         if (run) begin
             if (!spi_mode) begin
                 if (state != IDLE || cs || req || stepped != 3'd0) begin
@@ -261,8 +264,8 @@ module tmc429_chain (
                             if (motor >= lsmd_e) begin
                                 state_n = HOLD;  cnt_n = {1'b0, t_hi};  gt1_n = 1'b1;
                             end else begin
-                                motor_ns = motor + 2'd1;  cidx_n = cidx + 6'd1;
-                                state_n = GAP;  cnt_n = t_gap;  gt1_n = 1'b1;  shift = 1'b1;
+                                motor_ns = motor + 2'd1;  cidx_n = cidx + 6'd1;   // shift (below)
+                                state_n = GAP;  cnt_n = t_gap;  gt1_n = 1'b1;
                             end
                         end else begin
                             cidx_n = cidx + 6'd1;
@@ -299,6 +302,11 @@ module tmc429_chain (
             readback_n = 48'd0;
     end
 
+    assign     hi_nxm_n = (state_n == HIGH) & ~gt1_n & nxm_n;
+    // the NxM gap's entry (HIGH's last edge, nxm, motor < LSMD): the next motor's snapshot
+    // moves to slot 0
+    wire       shift    = run & spi_mode & hi_nxm & (motor < lsmd_e);
+
     // a start sets CS active, SCK high and motor 0; the pin registers (tmc429_drvpins)
     // select the same after `take`, so that the start is the last input of a pin's level
     wire       cs_n    = take | cs_ns;
@@ -308,7 +316,7 @@ module tmc429_chain (
     always @(posedge clk) begin
         if (rst) begin
             state <= IDLE;  cnt <= 10'd0;  cnt_gt1 <= 1'b0;  cidx <= 6'd0;  motor <= 2'd0;  bits <= 7'd0;
-            can_start <= 1'b1;
+            can_start <= 1'b1;  hi_nxm <= 1'b0;
             req <= 1'b0;  stepped <= 3'd0;  nxm <= 1'b0;
             cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
             cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b1;
@@ -316,7 +324,7 @@ module tmc429_chain (
             ramp_tick <= 3'd0;  cont_update <= 1'b0;  wrap <= 1'b0;
         end else begin
             state <= state_n;  cnt <= cnt_n;  cnt_gt1 <= gt1_n;  cidx <= cidx_n;  motor <= motor_n;
-            can_start <= can_start_n;
+            can_start <= can_start_n;  hi_nxm <= hi_nxm_n;
             bits <= bits_n;  req <= req_n;  stepped <= stepped_n;  nxm <= nxm_n;
             cover_busy <= cover_busy_n;  dgw_busy <= dgw_busy_n;  readback <= readback_n;
             cs <= cs_n;  sck <= sck_n;  sdo <= sdo_n;
