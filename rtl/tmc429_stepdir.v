@@ -145,9 +145,15 @@ module tmc429_stepdir #(
     wire [23:0]       bl_q;                    // the word of the motor in its slot and after it
     reg  [6:0]        e_q;                     // near() of that motor's backlog, formed in its slot
     reg               bn_q;                    // its sign
-    // one motor's register is cleared with its flags; a RAM word is void while b_z holds
-    wire              z_wb   = (MOTORS > 1) & |(wb & b_z);
-    wire [23:0]       base   = z_wb ? 24'd0 : bl_q;
+    // the backlog of the motor `sel` selects: one motor's register is cleared with its flags;
+    // a RAM word is void while the motor's b_z holds
+    function [23:0] word_of;
+        input [MOTORS-1:0] sel;
+        begin
+            word_of = ((MOTORS > 1) & |(sel & b_z)) ? 24'd0 : bl_q;
+        end
+    endfunction
+    wire [23:0]       base   = word_of(wb);
     wire [23:0]       bl_new = base + {{21{d_q[2]}}, d_q};
     integer k;
     always @(posedge clk) begin
@@ -166,7 +172,7 @@ module tmc429_stepdir #(
                     d = d | dlt[3*k +: 3];               // 0 but for the slot's motor
                 d_q <= d;
                 if (MOTORS > 1) begin
-                    b = |(ev & b_z) ? 24'd0 : bl_q;   // the word is void while b_z holds
+                    b = word_of(ev);
                     e_q  <= near(b);
                     bn_q <= b[23];
                 end
