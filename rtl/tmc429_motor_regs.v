@@ -79,7 +79,7 @@ module tmc429_motor_regs #(
     /* verilator lint_off UNUSEDSIGNAL */   // the unit's condition levels (its vector boundary):
     wire       stop, tol_ok;                // the interrupt takes their registered copies
     /* verilator lint_on UNUSEDSIGNAL */
-    wire       c_stop, c_sel, c_tol;
+    wire       c_stop, c_sel, c_tol, c_eq;
     wire [23:0] x_latched;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [11:0] v_actual;     // formed once for all motors in the read path (tmc429_regfile)
@@ -99,15 +99,15 @@ module tmc429_motor_regs #(
         .x_actual(x_actual), .v(v), .v_target(v_target), .a_actual(a_actual), .ustep(ustep),
         .acc(pulse_acc), .step(step), .dir(dir), .x_latched(x_latched), .lp(lp),
         .v_hold(v_hold), .stop_soft(stop_soft),
-        .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .c_stop(c_stop), .c_sel(c_sel), .c_tol(c_tol),
+        .xeqt(xeqt), .stop(stop), .tol_ok(tol_ok), .c_stop(c_stop), .c_sel(c_sel), .c_tol(c_tol), .c_eq(c_eq),
         .v_actual(v_actual), .v_rnd(v_rnd));
 
     // ---- interrupt conditions (C63), from the old state of the edge before the slot ------
     // registered in that edge (sample_tick): the slot applies them (C52).
-    // The switch stop, the selected switch (REF_RnL) and |x_actual| < tolerance are registered
-    // beside the stop actions in tmc429_ramp (c_stop, c_sel, c_tol); here the two switch
-    // levels (each HIGH condition and its LOW complement), x_actual = 0 and xEQt
-    reg        cq_r, cq_l, cq_x0, cq_xeqt;
+    // The switch stop, the selected switch (REF_RnL), |x_actual| < tolerance and xEQt are
+    // registered beside the stop actions in tmc429_ramp (c_stop, c_sel, c_tol, c_eq); here the
+    // two switch levels (each HIGH condition and its LOW complement) and x_actual = 0
+    reg        cq_r, cq_l, cq_x0;
     // the conditions the slot applies, formed in the clocked block only in the slot and in a
     // write of the interrupt register (docs/rtl.md, "Logic in its slot")
     function [7:0] cond_of;
@@ -141,18 +141,17 @@ module tmc429_motor_regs #(
             int_mask <= 8'd0;   int_flags <= 8'd0;
             int_hist <= COND_RESET;     // the conditions of the reset state: no event at power-on
             cq_r <= COND_RESET[7];  cq_l <= COND_RESET[6];    // the LOW bits 5, 4 their complements
-            cq_x0 <= COND_RESET[2];  cq_xeqt <= COND_RESET[0];
+            cq_x0 <= COND_RESET[2];      // xEQt: c_eq, 1 from reset (COND_RESET[0])
             pulse_div <= 4'd0;  ramp_div <= 4'd0;  usrs <= 3'd0;
         end else begin
             if (sample_tick) begin   // only where taken (docs/rtl.md, "Logic in its slot")
                 cq_r    <= sw_r;
                 cq_l    <= sw_l;
                 cq_x0   <= x_actual == 24'd0;
-                cq_xeqt <= xeqt;
             end
             if (slot | w_int) begin : irq_flags   // only where they change
                 reg [7:0] cond_q, events;
-                cond_q = cond_of(cq_r, cq_l, c_stop, cq_x0, c_sel, c_tol, cq_xeqt);
+                cond_q = cond_of(cq_r, cq_l, c_stop, cq_x0, c_sel, c_tol, c_eq);
                 events = slot ? (cond_q & ~int_hist) : 8'd0;
                 if (slot)
                     int_hist <= cond_q;

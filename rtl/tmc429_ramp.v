@@ -85,11 +85,13 @@ module tmc429_ramp #(
     output wire        stop,       // switch stop condition (STOP interrupt, C63)
     output wire        tol_ok,     // |x_actual| < dx_ref_tolerance
     // the same conditions of the last sample_tick edge (registers): the switch stop, the
-    // selected switch (REF_RnL) and the tolerance window, which the motor's condition slot
-    // applies (C52, C63)
+    // selected switch (REF_RnL), the tolerance window and x_actual = x_target, which the
+    // motor's condition slot applies (C52, C63); c_eq is 1 from reset (POS_END's condition of
+    // the reset state) to the first sample
     output reg         c_stop,
     output reg         c_sel,
     output reg         c_tol,
+    output reg         c_eq,
     output wire [11:0] v_actual,   // readout sign(V) * (|V| >> 8) (C42)
     // V >> 8 rounds up toward 0: V < 0 with a nonzero low byte (v_actual = V[19:8] + v_rnd),
     // one LUT of two flip-flops: the read path's rounding bit (rd_round, tmc429_spi_slave)
@@ -102,11 +104,11 @@ module tmc429_ramp #(
                                      // the next edge with run = 1 (C53)
     reg stop_hard;                   // registered hard stop action (C52, C61)
     // the conditions of the edge before, which the condition slot applies (C52): the stop
-    // actions and the latch (and the outputs c_stop, c_sel, c_tol). The hard stop action is
-    // kept as its terms, combined in the slot: the stop at target's (c_eq: x_actual =
+    // actions and the latch (and the outputs c_stop, c_sel, c_tol, c_eq). The hard stop action
+    // is kept as its terms, combined in the slot: the stop at target's (c_eq: x_actual =
     // x_target, c_slow: RAMP/SOFT mode and |V|>>8 <= v_min) and the switch's (c_hsw), so that
     // the 24-bit comparison x_actual = x_target ends in a flip-flop, not in further LUTs
-    reg c_eq, c_slow, c_hsw, c_soft, c_latch;
+    reg c_slow, c_hsw, c_soft, c_latch;
 
     // ---- velocity magnitude, readout ---------------------------------------------------
     wire        v_neg  = v[19];
@@ -245,7 +247,7 @@ module tmc429_ramp #(
             ustep <= 8'd0;      acc <= 11'd0;    step <= 1'b0;       dir <= 1'b0;
             x_latched <= 24'd0; lp <= 1'b0;      ref_prev <= 1'b0;
             stop_hard <= 1'b0;  stop_soft <= 1'b0;  v_mc <= 1'b0;
-            c_eq <= 1'b0;       c_slow <= 1'b0;     c_hsw <= 1'b0;
+            c_eq <= 1'b1;       c_slow <= 1'b0;     c_hsw <= 1'b0;
             c_soft <= 1'b0;     c_sel <= 1'b0;      c_latch <= 1'b0;
             c_stop <= 1'b0;     c_tol <= 1'b0;
             step_due <= 1'b0;   step_neg <= 1'b0;

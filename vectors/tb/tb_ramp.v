@@ -45,7 +45,7 @@ module tb_ramp;
         .a_actual(vout[72:61]), .ustep(vout[60:53]), .acc(vout[52:42]), .step(vout[41]),
         .dir(vout[40]), .x_latched(vout[39:16]), .lp(vout[15]), .xeqt(vout[14]),
         .stop(vout[13]), .tol_ok(vout[12]), .v_actual(vout[11:0]),
-        .c_stop(), .c_sel(), .c_tol(),      // the interrupt's registered conditions: not in the vectors
+        .c_stop(), .c_sel(), .c_tol(), .c_eq(),   // the interrupt's registered conditions: not in the vectors
         .v_rnd(),                           // the read path's rounding bit: not in the vectors
         .v_hold(v_hold), .stop_soft(stop_soft));
 endmodule
