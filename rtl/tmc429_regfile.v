@@ -450,19 +450,15 @@ module tmc429_regfile #(
                        | ({23'd0, rq_sw & sw_r[1]} << `TMC429_F_R2) | ({23'd0, rq_sw & sw_l[1]} << `TMC429_F_L2)
                        | ({23'd0, rq_sw & sw_r[2]} << `TMC429_F_R3) | ({23'd0, rq_sw & sw_l[2]} << `TMC429_F_L3);
     // power_down reads 0; the rest: shadow RAM
-    // the selects of the motors the variant has (TMC4210: motor 0 alone; the others' flip-flops
-    // stay 0 from reset, and the multiplexer does not depend on them)
-    localparam [2:0] MOT_PRESENT = (NMOT == 1) ? 3'b001 : 3'b111;
-    wire [2:0]  rq_mp   = rq_mot & MOT_PRESENT;
-    wire [23:0] st_data = ({24{rq_mp[0]}} & m_rdata[23:0])
-                        | ({24{rq_mp[1]}} & m_rdata[47:24])
-                        | ({24{rq_mp[2]}} & m_rdata[71:48])
+    wire [23:0] st_data = ({24{rq_mot[0]}} & m_rdata[23:0])
+                        | ({24{rq_mot[1]}} & m_rdata[47:24])
+                        | ({24{rq_mot[2]}} & m_rdata[71:48])
                         | ({24{rq_glb}} & st_glb);
     // v_actual (V >> 8 rounded toward 0, C42): V[19:8] of the selected motor and its rounding
     // bit (a LUT of flip-flops in tmc429_ramp), which the SPI slave adds in the next edge
-    wire [11:0] v_sel  = ({12{rq_mp[0]}} & m_v_hi[11:0]) | ({12{rq_mp[1]}} & m_v_hi[23:12])
-                       | ({12{rq_mp[2]}} & m_v_hi[35:24]);
-    wire        v_up   = |(rq_mp & m_v_rnd);
+    wire [11:0] v_sel  = ({12{rq_mot[0]}} & m_v_hi[11:0]) | ({12{rq_mot[1]}} & m_v_hi[23:12])
+                       | ({12{rq_mot[2]}} & m_v_hi[35:24]);
+    wire        v_up   = |(rq_mot & m_v_rnd);
     // rd_data is 0 outside the edge that loads it (rd_load): the value matters in that edge
     // alone, and a simulator then evaluates the multiplexer only when a read takes it (the
     // SPI slave's load already selects on rd_load, so synthesis forms the same logic). The
