@@ -139,6 +139,9 @@ module tmc429_chain (
     reg        nxm, nxm_n;
     reg [5:0]  cov_pos;
     reg [6:0]  cov_end;                 // cover_pos + cover_len (length at most 24)
+    // cover_len > 24 (25 to 31) as a bit test: a comparison written `>` is a carry chain, in
+    // front of the sum's own (scripts/carry-paths)
+    wire       len_over = cover_len[4] & cover_len[3] & (|cover_len[2:0]);
     reg [23:0] cov_data;
     reg [9:0]  cupd0, cupd1, cupd2;
     reg        cover_busy_n, dgw_busy_n, start;
@@ -351,7 +354,7 @@ module tmc429_chain (
             snap_step <= stepped | step;
             snap_pol  <= {pol_dac_ab, pol_fd_ab, pol_ph_ab};
             cov_pos   <= cover_pos;
-            cov_end   <= {1'b0, cover_pos} + ((cover_len > 5'd24) ? 7'd24 : {2'd0, cover_len});
+            cov_end   <= {1'b0, cover_pos} + (len_over ? 7'd24 : {2'd0, cover_len});
             cov_data  <= cover_datagram;
         end else if (shift) begin
             // the NxM gap: the next motor's snapshot moves to slot 0

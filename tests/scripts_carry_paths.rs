@@ -31,7 +31,9 @@ fn file(tag: &str, name: &str, body: &str) -> PathBuf {
 }
 
 fn ff(name: &str, d: u32, q: u32) -> String {
-    format!(r#""{name}": {{"type": "SB_DFF", "port_directions": {{"C": "input", "D": "input", "Q": "output"}}, "connections": {{"C": [1], "D": [{d}], "Q": [{q}]}}}}"#)
+    format!(
+        r#""{name}": {{"type": "SB_DFF", "port_directions": {{"C": "input", "D": "input", "Q": "output"}}, "connections": {{"C": [1], "D": [{d}], "Q": [{q}]}}}}"#
+    )
 }
 
 fn carry(name: &str, i0: u32, i1: u32, ci: &str, co: u32) -> String {
@@ -59,7 +61,8 @@ fn netlist() -> String {
         carry("x2", 22, 3, "20", 21),
         ff("h_ff", 21, 23),
     ];
-    let nets = [("clk", 1), ("a", 2), ("b", 3), ("sum1", 11), ("l1_o", 12), ("sum2", 13), ("e", 14), ("f", 15), ("g", 16), ("x", 21), ("h", 23)];
+    let nets =
+        [("clk", 1), ("a", 2), ("b", 3), ("sum1", 11), ("l1_o", 12), ("sum2", 13), ("e", 14), ("f", 15), ("g", 16), ("x", 21), ("h", 23)];
     let nets: Vec<String> = nets.iter().map(|(n, b)| format!(r#""{n}": {{"bits": [{b}]}}"#)).collect();
     format!(
         r#"{{"creator": "Yosys", "modules": {{"tmc429_chip": {{"attributes": {{"top": "1"}}, "ports": {{"clk": {{"direction": "input", "bits": [1]}}}}, "cells": {{{}}}, "netnames": {{{}}}}}}}}}"#,
@@ -85,16 +88,16 @@ fn a_path_through_two_chains_is_listed_and_fails() {
 #[test]
 fn an_allowed_path_end_passes_and_is_marked() {
     let p = file("allow", "n.json", &netlist());
-    let o = carry_paths(&["--allow", "^e ", p.to_str().unwrap()]);
+    let o = carry_paths(&["--allow", "^e$", p.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(0), "stderr: {}", text(&o.stderr));
     assert!(text(&o.stdout).contains("  2 chains (allowed): a -> e (D)\n"), "{}", text(&o.stdout));
     // a pattern that matches another register does not allow e
-    let o = carry_paths(&["--allow", "^f ", p.to_str().unwrap()]);
+    let o = carry_paths(&["--allow", "^f$", p.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));
 }
 
 #[test]
-fn bad_usage_an_unreadable_file_or_not_a_netlist_exits_2() {
+fn bad_usage_an_unreadable_file_a_loop_or_not_a_netlist_exits_2() {
     let usage = "usage: scripts/carry-paths [--allow REGEX]... NETLIST.json...\n";
     for args in [&[][..], &["--allow"][..], &["--frob", "x.json"][..]] {
         let o = carry_paths(args);
@@ -112,9 +115,19 @@ fn bad_usage_an_unreadable_file_or_not_a_netlist_exits_2() {
     let o = carry_paths(&[not.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
     assert!(
-        text(&o.stderr).starts_with(&format!("carry-paths: {}: not a Yosys JSON netlist (expected a flat module with cells)", not.display())),
+        text(&o.stderr)
+            .starts_with(&format!("carry-paths: {}: not a Yosys JSON netlist (expected a flat module with cells)", not.display())),
         "{}",
         text(&o.stderr)
     );
     assert!(o.stdout.is_empty());
+    // a LUT that takes its own output into flip-flop e: no path ends to count
+    let looped = netlist().replace(
+        r#""I0": [11], "I1": [2], "I2": ["0"], "I3": ["0"], "O": [12]"#,
+        r#""I0": [12], "I1": [2], "I2": ["0"], "I3": ["0"], "O": [12]"#,
+    );
+    let p = file("loop", "n.json", &looped);
+    let o = carry_paths(&[p.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(text(&o.stderr), format!("carry-paths: {}: a combinational loop through l1_o: not a synthesized netlist\n", p.display()));
 }
