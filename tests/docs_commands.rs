@@ -5,7 +5,7 @@
 //! `rtl/`, `vectors/`, `fpga/`, `scripts/` and `tests/`. docs/bench.md's blocks run the same way,
 //! with the decoders of `sigrok/` at hand. docs/fpga.md's blocks synthesize and place and route
 //! for minutes: that test is `#[ignore]`d and scripts/test runs it on its own
-//! (`cargo test --release --test docs_commands -- --ignored`). ```text blocks are synopses and
+//! (`cargo test --workspace --release --test docs_commands -- --ignored`). ```text blocks are synopses and
 //! the documented full runs, not run.
 //!
 //! Not run here: the set-up and test scripts themselves (`./scripts/setup`, `./scripts/test`),
