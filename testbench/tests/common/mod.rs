@@ -5,6 +5,7 @@ use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use std::path::Path;
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Compiles the test bench `bench` (its `NVEC` replaced by the number of `lines`) with
 /// `rtl/<module>.v`, runs it on `lines` as `vectors.hex` in a scratch directory and returns what
@@ -15,9 +16,12 @@ pub fn icarus_unit(module: &str, bench: &str, lines: &[String]) -> String {
 }
 
 /// As [`icarus_unit`], with the modules `rtl/<module>.v` of `modules` (the first names the
-/// scratch directory) and `rtl/` as the include path of the register map and frame schedule.
+/// scratch directory, a count of the calls keeps the tests of one process that run at the same
+/// time apart) and `rtl/` as the include path of the register map and frame schedule.
 pub fn icarus_modules(modules: &[&str], bench: &str, lines: &[String]) -> String {
-    let dir = std::env::temp_dir().join(format!("tmc429-{}-{}", modules[0], std::process::id()));
+    static CALLS: AtomicUsize = AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("tmc429-{}-{}-{call}", modules[0], std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let hex: String = lines.iter().map(|l| format!("{l}\n")).collect();
     std::fs::write(dir.join("vectors.hex"), hex).unwrap();
