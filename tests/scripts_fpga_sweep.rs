@@ -5,7 +5,8 @@
 //! give nextpnr one second, far less than its placement takes. `scripts/fpga` goes on after a
 //! place and route that fails as after one past its time; with `--until-met` it places the seeds
 //! in order and stops at the first placement that meets the CLK; `scripts/rtl-report` ends with
-//! the worst path of each placement it lists (one TMC4210 placement, under a minute).
+//! the worst path of each placement it lists and its path ends' slack at 48 MHz, whose Fmax is
+//! nextpnr's own (one TMC4210 placement, under a minute).
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -145,9 +146,23 @@ fn rtl_report_prints_the_worst_path_of_each_placement_it_lists() {
     assert!(lines[head + 1].starts_with(&format!("plain-tmc4210.seed1.nextpnr.log: {mhz} MHz; worst path ")), "{stdout}");
     assert!(lines[head + 2].starts_with("  from u_top."), "{stdout}");
     assert!(lines[head + 3].starts_with("  to   u_top."), "{stdout}");
+    // then the placement's path ends below zero slack at 48 MHz (scripts/pnr-slack), whose
+    // Fmax, computed from the delays nextpnr wrote, is nextpnr's own
+    assert_eq!(
+        lines[head + 4..head + 7],
+        [
+            "",
+            "Path ends below zero slack at 48 MHz, the chip's 32 MHz with 50 % margin (scripts/pnr-slack on the delays",
+            "nextpnr wrote for each placement, which --out keeps: FLOW-CHIP.seedS.sdf and .routed.json), by unit:"
+        ],
+        "{stdout}"
+    );
+    let slack = lines[head + 7];
+    assert!(slack.starts_with(&format!("plain-tmc4210.seed1: {mhz} MHz; ")), "{stdout}");
+    assert!(slack.contains(" path ends below zero slack at 48 MHz ("), "{stdout}");
     // then the netlist's carry cells with one net on both operands: none (docs/rtl.md "Checks")
     assert_eq!(
-        lines[head + 4..],
+        lines[head + 8..],
         [
             "",
             "Carry cells with one net on both operands (scripts/carry-check; docs/rtl.md \"Checks\"):",
@@ -155,6 +170,8 @@ fn rtl_report_prints_the_worst_path_of_each_placement_it_lists() {
         ],
         "{stdout}"
     );
-    assert!(out.join("plain-tmc4210.seed1.nextpnr.log").exists());
+    for kept in ["plain-tmc4210.seed1.nextpnr.log", "plain-tmc4210.seed1.sdf", "plain-tmc4210.seed1.routed.json"] {
+        assert!(out.join(kept).exists(), "{kept}");
+    }
     std::fs::remove_dir_all(&out).ok();
 }
