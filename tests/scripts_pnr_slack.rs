@@ -47,6 +47,24 @@ fn each_path_end_s_slack_by_its_register_and_unit() {
 }
 
 #[test]
+fn the_worst_path_into_a_register_step_by_step() {
+    let o = pnr_slack(&["--mhz", "250", "--path", "u_top.u_c.q", SDF, ROUTED, SYNTH]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", text(&o.stderr));
+    // a's clock to output, the LUT b (the net it drives) reached at 1390 + 600 + 1000 ps, c's
+    // input 700 ps later with its setup
+    let want = "\nthe worst path into u_top.u_c.q (slack -0.92 ns at 250 MHz):\n    \
+                1.39  u_top.u_a.q  (clock to output)\n    \
+                2.99  u_top.u_b.sum  (I0 to O)\n    \
+                4.92  u_top.u_c.q  (I0 and its setup)\n";
+    assert!(text(&o.stdout).ends_with(want), "{}", text(&o.stdout));
+    // a name no path end has: nothing printed
+    let o = pnr_slack(&["--path", "u_top.u_a.q", SDF, ROUTED, SYNTH]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(text(&o.stderr), "pnr-slack: --path: no path end loads a register named 'u_top.u_a.q' (the names --worst prints)\n");
+    assert!(o.stdout.is_empty());
+}
+
+#[test]
 fn the_summary_is_one_line_and_48_mhz_is_the_default() {
     let o = pnr_slack(&["--summary", "--mhz", "250", SDF, ROUTED, SYNTH]);
     assert_eq!(o.status.code(), Some(0), "stderr: {}", text(&o.stderr));
@@ -58,7 +76,8 @@ fn the_summary_is_one_line_and_48_mhz_is_the_default() {
 
 #[test]
 fn bad_usage_and_bad_files_are_named_with_exit_status_2() {
-    let usage = "pnr-slack: usage: scripts/pnr-slack [--mhz F] [--worst N] [--log LOG] [--summary] SDF ROUTED.json SYNTH.json\n";
+    let usage =
+        "pnr-slack: usage: scripts/pnr-slack [--mhz F] [--worst N] [--path REG] [--log LOG] [--summary] SDF ROUTED.json SYNTH.json\n";
     let o = pnr_slack(&[SDF, ROUTED]);
     assert_eq!((o.status.code(), text(&o.stderr)), (Some(2), usage.to_string()));
     let o = pnr_slack(&["--mhz", "0", SDF, ROUTED, SYNTH]);
