@@ -110,6 +110,12 @@ fn a_broken_sdf_is_named_by_file_and_line() {
         (o.status.code(), text(&o.stderr)),
         (Some(2), format!("pnr-slack: {p}:26: expected a delay (min:typ:max in ps), found (1390:x:1390)\n"))
     );
+    // bytes that are no text
+    let binary = dir.join("binary.sdf");
+    std::fs::write(&binary, [0x7f, b'E', b'L', b'F', 0xff, 0xfe, 0x00, 0x80]).unwrap();
+    let p = binary.to_str().unwrap();
+    let o = pnr_slack(&[p, ROUTED, SYNTH]);
+    assert_eq!((o.status.code(), text(&o.stderr)), (Some(2), format!("pnr-slack: {p}: not an SDF file (not UTF-8 text)\n")));
     let cut = dir.join("cut.sdf");
     std::fs::write(&cut, &sdf[..sdf.find("  (CELL\n    (CELLTYPE \"ICESTORM_RAM\")").unwrap()]).unwrap();
     let p = cut.to_str().unwrap();
