@@ -6,7 +6,7 @@
 //! c's input 1390 + 600 + 1000 + 700 = 3690 ps (a through b; the RAM's 1178 + 400 + 1100 = 2678
 //! is earlier), with its setup 1234 ps: 4924 ps, the worst path, 203.09 MHz; d's 1390 + 500 +
 //! 1181 = 3071 ps; the RAM's write data 1390 + 900 + 100 = 2390 ps. At 250 MHz (4000 ps) c has
-//! -924 ps of slack, d 929, the RAM 1610. That the Fmax is nextpnr's own on a real placement:
+//! -924 ps of slack, d 929, the RAM 1610. That the Fmax is nextpnr's (to its rounding) on a real placement:
 //! tests/scripts_fpga_sweep.rs (`scripts/rtl-report`).
 
 use std::path::Path;
