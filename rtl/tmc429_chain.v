@@ -34,9 +34,10 @@
 // (`ret_cw`, `ret_dgw`). Powered down (`run` = 0) everything holds (C66).
 //
 // Pin levels before polarity: `cs`, `sck`, `sdo` and `motor` (for csCommonIndividual) of
-// the current state; for the registered output pins `sdo_n` of the new state and `cs_ns`,
-// `sck_ns`, `motor_ns` of the new state unless a datagram starts (`take` sets CS active,
-// SCK high, motor 0), so that the start is the last input of the pin levels.
+// the current state; for the registered output pins `sdo_nx` of the new state and
+// `cs_pre_nx`, `sck_pre_nx`, `motor_pre_nx` of the new state before a start overrides them
+// (`take` sets CS active, SCK high, motor 0), so that the start is the last input of the
+// pin levels.
 // Same function as tmc429_model::chain::Chain.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -84,10 +85,10 @@ module tmc429_chain (
     output reg         sck,
     output reg         sdo,
     output reg  [1:0]  motor,
-    output reg         cs_ns,          // cs of the new state if no datagram starts (take = 0)
-    output reg         sck_ns,         // sck likewise
-    output reg         sdo_n,          // sdo of the new state
-    output reg  [1:0]  motor_ns,       // motor likewise
+    output reg         cs_pre_nx,      // cs of the new state if no datagram starts (take = 0)
+    output reg         sck_pre_nx,     // sck likewise
+    output reg         sdo_nx,         // sdo of the new state
+    output reg  [1:0]  motor_pre_nx,   // motor likewise
     // probes
     output reg  [2:0]  state,
     output reg  [5:0]  cidx,           // configuration cell of the current bit
@@ -125,18 +126,18 @@ module tmc429_chain (
     end
 
     // ---- state ----------------------------------------------------------------------------
-    reg [9:0]  cnt, cnt_n;
-    reg [2:0]  state_n;
-    reg [5:0]  cidx_n;
-    reg [6:0]  bits_n;
-    reg        req_n;
-    reg [2:0]  stepped, stepped_n;
+    reg [9:0]  cnt, cnt_nx;
+    reg [2:0]  state_nx;
+    reg [5:0]  cidx_nx;
+    reg [6:0]  bits_nx;
+    reg        req_nx;
+    reg [2:0]  stepped, stepped_nx;
     reg [23:0] snap_w;                  // slots {2, 1, 0}; slot 0 = current motor
     reg [8:0]  snap_is;
     reg [2:0]  snap_dir, snap_step, snap_pol;
     reg [5:0]  cfg, dac;
     reg        cov_sel, cov_bit;
-    reg        nxm, nxm_n;
+    reg        nxm, nxm_nx;
     reg [5:0]  cov_pos;
     reg [6:0]  cov_end;                 // cover_pos + cover_len (length at most 24)
     // cover_len > 24 (25 to 31) as a bit test: a comparison written `>` is a carry chain, in
@@ -144,13 +145,13 @@ module tmc429_chain (
     wire       len_over = cover_len[4] & cover_len[3] & (|cover_len[2:0]);
     reg [23:0] cov_data;
     reg [9:0]  cupd0, cupd1, cupd2;
-    reg        cover_busy_n, dgw_busy_n, start;
+    reg        cover_busy_nx, dgw_busy_nx, start;
     // the HIGH state's last edge with an NxM bit (state HIGH, cnt <= 1, nxm): a register formed
     // with the next state, so that the NxM gap's shift of the snapshot (below) is an AND of
     // flip-flops and the snapshot's enable leaves the next-state logic (the requests and the
     // start) out of its cone
     reg        hi_nxm;
-    wire       hi_nxm_n;
+    wire       hi_nxm_nx;
     // can_start = (state == IDLE) | (CSOFF with cnt <= 1): a datagram may start in this edge.
     // A register formed with the next state (HOLD enters CSOFF with cnt = P >= 16), so that
     // `start` is request AND a flip-flop.
@@ -161,13 +162,13 @@ module tmc429_chain (
     // state (a count down from cnt: cnt > 2; a load: the loaded value's, 1 but for t_lo,
     // whose is registered with it), so that the OR of nine bits is not in front of every next
     // state.
-    reg        cnt_gt1, gt1_n;          // = |cnt[9:1]
+    reg        cnt_gt1, gt1_nx;         // = |cnt[9:1]
     wire       cnt_le2 = ~|cnt[9:2] & ~&cnt[1:0];
     reg        can_start;
-    wire       can_start_n = ~run ? can_start
+    wire       can_start_nx = ~run ? can_start
                            : (~spi_mode | (~start & ((state == IDLE)
                                                      | ((state[2:1] == 2'b11) & cnt_le2))));
-    reg [47:0] readback_n;
+    reg [47:0] readback_nx;
 
     // ---- RAM reads ahead of a bit (C80) ------------------------------------------------------
     wire       pre_bit  = (state == SETUP) | (state == HIGH) | (state == GAP);
@@ -215,7 +216,7 @@ module tmc429_chain (
     reg        cont_update;
     wire [2:0] cu_tick = ramp_tick & {3{cont_update}};
     reg  [2:0] cupd_top;                // counter at 1023 (registered compare)
-    wire [2:0] cupd_top_n = (run & spi_mode)
+    wire [2:0] cupd_top_nx = (run & spi_mode)
                           ? {cupd2 + {9'd0, cu_tick[2]} == 10'd1023,
                              cupd1 + {9'd0, cu_tick[1]} == 10'd1023,
                              cupd0 + {9'd0, cu_tick[0]} == 10'd1023}
@@ -226,95 +227,95 @@ module tmc429_chain (
 
     // ---- next state -------------------------------------------------------------------------
     always @(*) begin
-        state_n = state;  cnt_n = cnt;  gt1_n = cnt_gt1;  cidx_n = cidx;  motor_ns = motor;  bits_n = bits;
-        req_n = req;  stepped_n = stepped;  nxm_n = nxm;
-        cover_busy_n = cover_busy;  dgw_busy_n = dgw_busy;  readback_n = readback;
-        cs_ns = cs;  sck_ns = sck;  sdo_n = sdo;
+        state_nx = state;  cnt_nx = cnt;  gt1_nx = cnt_gt1;  cidx_nx = cidx;  bits_nx = bits;
+        motor_pre_nx = motor;  req_nx = req;  stepped_nx = stepped;  nxm_nx = nxm;
+        cover_busy_nx = cover_busy;  dgw_busy_nx = dgw_busy;  readback_nx = readback;
+        cs_pre_nx = cs;  sck_pre_nx = sck;  sdo_nx = sdo;
         start = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
         if (run) begin
             if (!spi_mode) begin
                 if (state != IDLE || cs || req || stepped != 3'd0) begin
                     // C89: leaving SPI mode aborts; taken flags return to waiting
                     ret_cw = cover_busy;   ret_dgw = dgw_busy;
-                    state_n = IDLE;  cnt_n = 10'd0;  gt1_n = 1'b0;  cidx_n = 6'd0;  motor_ns = 2'd0;  bits_n = 7'd0;
-                    req_n = 1'b0;  stepped_n = 3'd0;  nxm_n = 1'b0;
-                    cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
-                    cs_ns = 1'b0;  sck_ns = 1'b1;  sdo_n = 1'b1;
+                    state_nx = IDLE;  cnt_nx = 10'd0;  gt1_nx = 1'b0;  cidx_nx = 6'd0;  bits_nx = 7'd0;
+                    motor_pre_nx = 2'd0;  req_nx = 1'b0;  stepped_nx = 3'd0;  nxm_nx = 1'b0;
+                    cover_busy_nx = 1'b0;  dgw_busy_nx = 1'b0;
+                    cs_pre_nx = 1'b0;  sck_pre_nx = 1'b1;  sdo_nx = 1'b1;
                 end
             end else begin
                 start = can_start & request;
                 if (state == IDLE) begin
                     // waiting for a request (start)
                 end else if (cnt_gt1) begin
-                    cnt_n = cnt - 10'd1;  gt1_n = ~cnt_le2;
+                    cnt_nx = cnt - 10'd1;  gt1_nx = ~cnt_le2;
                 end else begin
                     case (state)
                     SETUP, GAP: begin
                         // falling SCK_S: the bit goes out (C84, C85)
-                        sdo_n = bit_now;  nxm_n = cfg[5];  sck_ns = 1'b0;
-                        state_n = LOW;  cnt_n = {1'b0, t_lo};  gt1_n = g_lo;
+                        sdo_nx = bit_now;  nxm_nx = cfg[5];  sck_pre_nx = 1'b0;
+                        state_nx = LOW;  cnt_nx = {1'b0, t_lo};  gt1_nx = g_lo;
                     end
                     LOW: begin
                         // rising SCK_S: SDI_S into the readback (C87)
-                        sck_ns = 1'b1;
-                        readback_n = {readback[46:0], sdi_s};
+                        sck_pre_nx = 1'b1;
+                        readback_nx = {readback[46:0], sdi_s};
                         if (bits != 7'd127)
-                            bits_n = bits + 7'd1;
-                        state_n = HIGH;  cnt_n = {1'b0, t_hi};  gt1_n = 1'b1;
+                            bits_nx = bits + 7'd1;
+                        state_nx = HIGH;  cnt_nx = {1'b0, t_hi};  gt1_nx = 1'b1;
                     end
                     HIGH: begin
                         if (nxm) begin
                             if (motor >= lsmd_e) begin
-                                state_n = HOLD;  cnt_n = {1'b0, t_hi};  gt1_n = 1'b1;
+                                state_nx = HOLD;  cnt_nx = {1'b0, t_hi};  gt1_nx = 1'b1;
                             end else begin
-                                motor_ns = motor + 2'd1;  cidx_n = cidx + 6'd1;   // shift (below)
-                                state_n = GAP;  cnt_n = t_gap;  gt1_n = 1'b1;
+                                motor_pre_nx = motor + 2'd1;  cidx_nx = cidx + 6'd1;   // shift (below)
+                                state_nx = GAP;  cnt_nx = t_gap;  gt1_nx = 1'b1;
                             end
                         end else begin
-                            cidx_n = cidx + 6'd1;
-                            sdo_n = bit_now;  nxm_n = cfg[5];  sck_ns = 1'b0;
-                            state_n = LOW;  cnt_n = {1'b0, t_lo};  gt1_n = g_lo;
+                            cidx_nx = cidx + 6'd1;
+                            sdo_nx = bit_now;  nxm_nx = cfg[5];  sck_pre_nx = 1'b0;
+                            state_nx = LOW;  cnt_nx = {1'b0, t_lo};  gt1_nx = g_lo;
                         end
                     end
                     HOLD: begin
                         // end of the datagram: CS inactive, SDO_S back high (C81), CDGW
                         // handshake done (C87, C88)
-                        cs_ns = 1'b0;  sdo_n = 1'b1;  cover_busy_n = 1'b0;  dgw_busy_n = 1'b0;
-                        state_n = CSOFF;  cnt_n = t_p;  gt1_n = 1'b1;
+                        cs_pre_nx = 1'b0;  sdo_nx = 1'b1;  cover_busy_nx = 1'b0;  dgw_busy_nx = 1'b0;
+                        state_nx = CSOFF;  cnt_nx = t_p;  gt1_nx = 1'b1;
                     end
                     default: begin
                         // CSOFF over: the next datagram starts at once if one is requested
-                        state_n = IDLE;
+                        state_nx = IDLE;
                     end
                     endcase
                 end
                 if (start) begin
                     take = 1'b1;
-                    cover_busy_n = cw;  dgw_busy_n = dgw;
-                    req_n = 1'b0;  stepped_n = 3'd0;
-                    cidx_n = 6'd0;  bits_n = 7'd0;
-                    state_n = SETUP;  cnt_n = {1'b0, t_hi};  gt1_n = 1'b1;
+                    cover_busy_nx = cw;  dgw_busy_nx = dgw;
+                    req_nx = 1'b0;  stepped_nx = 3'd0;
+                    cidx_nx = 6'd0;  bits_nx = 7'd0;
+                    state_nx = SETUP;  cnt_nx = {1'b0, t_hi};  gt1_nx = 1'b1;
                 end else begin
-                    req_n = request;
-                    stepped_n = stepped | step;
+                    req_nx = request;
+                    stepped_nx = stepped | step;
                 end
             end
         end
         // a µC write wins over the shift of the same edge (C3, C87); also while powered down
         if (readback_clr)
-            readback_n = 48'd0;
+            readback_nx = 48'd0;
     end
 
-    assign     hi_nxm_n = (state_n == HIGH) & ~gt1_n & nxm_n;
+    assign     hi_nxm_nx = (state_nx == HIGH) & ~gt1_nx & nxm_nx;
     // the NxM gap's entry (HIGH's last edge, nxm, motor < LSMD): the next motor's snapshot
     // moves to slot 0
     wire       shift    = run & spi_mode & hi_nxm & (motor < lsmd_e);
 
     // a start sets CS active, SCK high and motor 0; the pin registers (tmc429_drvpins)
     // select the same after `take`, so that the start is the last input of a pin's level
-    wire       cs_n    = take | cs_ns;
-    wire       sck_n   = take | sck_ns;
-    wire [1:0] motor_n = take ? 2'd0 : motor_ns;
+    wire       cs_nx    = take | cs_pre_nx;
+    wire       sck_nx   = take | sck_pre_nx;
+    wire [1:0] motor_nx = take ? 2'd0 : motor_pre_nx;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -326,17 +327,17 @@ module tmc429_chain (
             cupd0 <= 10'd0;  cupd1 <= 10'd341;  cupd2 <= 10'd682;  cupd_top <= 3'd0;
             ramp_tick <= 3'd0;  cont_update <= 1'b0;  wrap <= 1'b0;
         end else begin
-            state <= state_n;  cnt <= cnt_n;  cnt_gt1 <= gt1_n;  cidx <= cidx_n;  motor <= motor_n;
-            can_start <= can_start_n;  hi_nxm <= hi_nxm_n;
-            bits <= bits_n;  req <= req_n;  stepped <= stepped_n;  nxm <= nxm_n;
-            cover_busy <= cover_busy_n;  dgw_busy <= dgw_busy_n;  readback <= readback_n;
-            cs <= cs_n;  sck <= sck_n;  sdo <= sdo_n;
+            state <= state_nx;  cnt <= cnt_nx;  cnt_gt1 <= gt1_nx;  cidx <= cidx_nx;  motor <= motor_nx;
+            can_start <= can_start_nx;  hi_nxm <= hi_nxm_nx;
+            bits <= bits_nx;  req <= req_nx;  stepped <= stepped_nx;  nxm <= nxm_nx;
+            cover_busy <= cover_busy_nx;  dgw_busy <= dgw_busy_nx;  readback <= readback_nx;
+            cs <= cs_nx;  sck <= sck_nx;  sdo <= sdo_nx;
             if (run & spi_mode) begin
                 cupd0 <= cupd0 + {9'd0, cu_tick[0]};
                 cupd1 <= cupd1 + {9'd0, cu_tick[1]};
                 cupd2 <= cupd2 + {9'd0, cu_tick[2]};
             end
-            cupd_top <= cupd_top_n;
+            cupd_top <= cupd_top_nx;
             ramp_tick <= ramp_tick_nx;
             cont_update <= cont_update_nx;
             wrap <= |(ramp_tick_nx & {3{cont_update_nx}} & cupd_top);

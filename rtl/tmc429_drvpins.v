@@ -27,16 +27,16 @@ module tmc429_drvpins #(
 ) (
     input  wire       clk,
     input  wire       rst,
-    // new state
-    input  wire       spi_n,          // SPI mode
-    input  wire       sd_n,           // Step/Dir mode (TMC4210: en_sd)
+    // new state (`_pre_nx`: the chain's next level before a start overrides it)
+    input  wire       spi_nx,         // SPI mode
+    input  wire       sd_nx,          // Step/Dir mode (TMC4210: en_sd)
     input  wire       take,           // chain: a datagram starts (CS active, SCK high, motor 0)
-    input  wire       cs_ns,          // chain: chip select active, unless a datagram starts
-    input  wire       sck_ns,         // chain: SCK_S before polarity, unless one starts
-    input  wire       sdo_n,          // chain: SDO_S
-    input  wire [1:0] motor_ns,       // chain: motor of the current bit, unless one starts
-    input  wire [2:0] step_n,         // Step/Dir: STEP levels of motors 2..0 before inv_stp
-    input  wire [2:0] dir_n,          // Step/Dir: DIR levels before inv_dir
+    input  wire       cs_pre_nx,      // chain: chip select active, unless a datagram starts
+    input  wire       sck_pre_nx,     // chain: SCK_S before polarity, unless one starts
+    input  wire       sdo_nx,         // chain: SDO_S
+    input  wire [1:0] motor_pre_nx,   // chain: motor of the current bit, unless one starts
+    input  wire [2:0] step_nx,        // Step/Dir: STEP levels of motors 2..0 before inv_stp
+    input  wire [2:0] dir_nx,         // Step/Dir: DIR levels before inv_dir
     input  wire       pol_nscs_s,
     input  wire       pol_sck_s,
     input  wire       cs_com_ind,
@@ -59,23 +59,23 @@ module tmc429_drvpins #(
 );
     // ---- pin levels of the new state ---------------------------------------------------------
     reg p_nscs_s, p_sck_s, p_sdo_s, p_sdi_s_o, p_sdi_s_oe, p_nscs2, p_nscs3;
-    wire [2:0] st = step_n ^ {3{inv_stp}};
-    wire [2:0] dr = dir_n ^ {3{inv_dir}};
-    wire       spi = (CHIP == 0) | ((CHIP == 1) & spi_n);
+    wire [2:0] st = step_nx ^ {3{inv_stp}};
+    wire [2:0] dr = dir_nx ^ {3{inv_dir}};
+    wire       spi = (CHIP == 0) | ((CHIP == 1) & spi_nx);
 
     always @(*) begin
         p_sdi_s_o = 1'b0;  p_sdi_s_oe = 1'b0;
         if (spi) begin
             // the levels without a start, then the start (take) selects: it comes last, so
             // the chain's request -> start path ends one LUT before the pin register
-            p_sck_s = (sck_ns | take) ^ pol_sck_s;
-            p_sdo_s = sdo_n;
+            p_sck_s = (sck_pre_nx | take) ^ pol_sck_s;
+            p_sdo_s = sdo_nx;
             if (cs_com_ind) begin
-                p_nscs_s = ~take & ~(cs_ns & (motor_ns == 2'd0));
-                p_nscs2  = take | ~(cs_ns & (motor_ns == 2'd1));
-                p_nscs3  = take | ~(cs_ns & motor_ns[1]);
+                p_nscs_s = ~take & ~(cs_pre_nx & (motor_pre_nx == 2'd0));
+                p_nscs2  = take | ~(cs_pre_nx & (motor_pre_nx == 2'd1));
+                p_nscs3  = take | ~(cs_pre_nx & motor_pre_nx[1]);
             end else begin
-                p_nscs_s = take ? pol_nscs_s : (~cs_ns ^ pol_nscs_s);
+                p_nscs_s = take ? pol_nscs_s : (~cs_pre_nx ^ pol_nscs_s);
                 p_nscs2  = 1'b1;
                 p_nscs3  = 1'b1;
             end
@@ -85,8 +85,8 @@ module tmc429_drvpins #(
             p_nscs2    = st[2];  p_nscs3 = dr[2];
         end else begin
             // TMC4210 (C92): STEP and DIR high until en_sd = 1
-            p_sdo_s  = sd_n ? st[0] : 1'b1;
-            p_sck_s  = sd_n ? dr[0] : 1'b1;
+            p_sdo_s  = sd_nx ? st[0] : 1'b1;
+            p_sck_s  = sd_nx ? dr[0] : 1'b1;
             p_nscs_s = 1'b1;  p_nscs2 = 1'b1;  p_nscs3 = 1'b1;
         end
     end

@@ -73,11 +73,11 @@ module tmc429_ram #(
 
     wire        wr_e = sw_v | we;
     wire [5:0]  wr_a = sw_v ? sw_a : waddr;
-    wire [11:0] wr_d = sw_v ? rom_q : wdata;
+    wire [11:0] wr_data = sw_v ? rom_q : wdata;
     always @(posedge clk) begin
         if (wr_e) begin
-            mem1[wr_a] <= wr_d;
-            mem[wr_a] <= wr_d;
+            mem1[wr_a] <= wr_data;
+            mem[wr_a] <= wr_data;
         end
     end
 

@@ -80,16 +80,16 @@ module tmc429_spi_slave (
     // the first falling edge presents bit 31, which is already out (SPI mode 3)
     wire sck_fall  = sel & ~sck_q & sck_h & (cnt != 6'd0);
 
-    wire [31:0] in_next = {in_sr[30:0], sdi_q};
+    wire [31:0] in_sr_nx = {in_sr[30:0], sdi_q};
     // the 8th bit arrives now and it is a read
     assign      rd_load = sck_rise & (cnt == 6'd7) & sdi_q;
 
-    assign rd_addr     = in_next[7:1];
+    assign rd_addr     = in_sr_nx[7:1];
     assign rd_addr_q   = in_sr[5:0];
     assign frame_start = nscs_fall;
     assign exec        = exec_q;
     assign cmd         = in_sr;
-    assign addr_nx     = (~nscs_fall & sck_rise) ? in_next[31:24] : in_sr[31:24];
+    assign addr_nx     = (~nscs_fall & sck_rise) ? in_sr_nx[31:24] : in_sr[31:24];
     assign active      = ~nscs_h;
     assign sdo         = out_sr[31];
 
@@ -136,7 +136,7 @@ module tmc429_spi_slave (
             rd_addr_new <= 1'b0;
         end else begin
             if (sck_rise)
-                in_sr <= in_next;
+                in_sr <= in_sr_nx;
             rd_addr_new <= sck_rise;
             round_q <= rd_load & rd_round;
             if (rd_load)

@@ -21,7 +21,7 @@
 // the backlog = 0, 1, -1 and its sign are flip-flops of each motor, formed with the word, so
 // that a slot's decisions wait for neither the RAM nor the adder.
 //
-// `step_n` / `dir_n` are the levels of the new state (before inv_stp / inv_dir), for the
+// `step_nx` / `dir_nx` are the levels of the new state (before inv_stp / inv_dir), for the
 // output pin registers. Same function as tmc429_model::stepdir::StepDir.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -41,8 +41,8 @@ module tmc429_stepdir #(
     input  wire              step_half,
     output wire [MOTORS-1:0] step,         // STEP level before inv_stp (toggle state with step_half)
     output wire [MOTORS-1:0] dir,          // DIR level before inv_dir, 1 = negative
-    output wire [MOTORS-1:0] step_n,
-    output wire [MOTORS-1:0] dir_n
+    output wire [MOTORS-1:0] step_nx,
+    output wire [MOTORS-1:0] dir_nx
 );
     localparam READY = 2'd0, PULSE = 2'd1, SPACE = 2'd2, DIRSET = 2'd3;
 
@@ -247,8 +247,8 @@ module tmc429_stepdir #(
             assign dlt[3*g +: 3] = d;
             assign step[g]   = st;
             assign dir[g]    = dr;
-            assign step_n[g] = st_nx;
-            assign dir_n[g]  = dr_nx;
+            assign step_nx[g] = st_nx;
+            assign dir_nx[g]  = dr_nx;
 
             always @(*) begin
                 st_nx    = st;

@@ -295,8 +295,8 @@ module tmc429_top #(
         .i_scale(is2));
 
     // driver chain (C80-C89)
-    wire       c_cs, c_sck, c_sdo, c_cs_ns, c_sck_ns, c_sdo_n, c_req;
-    wire [1:0] c_motor, c_motor_ns;
+    wire       c_cs, c_sck, c_sdo, c_cs_pre_nx, c_sck_pre_nx, c_sdo_nx, c_req;
+    wire [1:0] c_motor, c_motor_pre_nx;
     wire [2:0] c_state;
     wire [5:0] c_cell;
     wire [6:0] c_bits;
@@ -317,14 +317,15 @@ module tmc429_top #(
         .take(take), .ret_cw(ret_cw), .ret_dgw(ret_dgw),
         .cover_busy(cover_busy), .dgw_busy(dgw_busy), .readback(readback),
         .cs(c_cs), .sck(c_sck), .sdo(c_sdo), .motor(c_motor),
-        .cs_ns(c_cs_ns), .sck_ns(c_sck_ns), .sdo_n(c_sdo_n), .motor_ns(c_motor_ns),
+        .cs_pre_nx(c_cs_pre_nx), .sck_pre_nx(c_sck_pre_nx),
+        .sdo_nx(c_sdo_nx), .motor_pre_nx(c_motor_pre_nx),
         .state(c_state), .cidx(c_cell), .bits(c_bits), .req(c_req));
 
     // Step/Dir (C91-C96): three motors on the TMC429, one on the TMC4210, none on the TMC428
-    wire [2:0] sd_step, sd_dir, sd_step_n, sd_dir_n;
+    wire [2:0] sd_step, sd_dir, sd_step_nx, sd_dir_nx;
     generate
         if (CHIP == 0) begin : g_sd_off
-            assign {sd_step, sd_dir, sd_step_n, sd_dir_n} = 12'd0;
+            assign {sd_step, sd_dir, sd_step_nx, sd_dir_nx} = 12'd0;
         end else begin : g_sd
             localparam SDM = (CHIP == 1) ? 3 : 1;
             tmc429_stepdir #(.MOTORS(SDM)) u_sd (
@@ -332,10 +333,10 @@ module tmc429_top #(
                 .step_in(m_step[SDM-1:0]), .dir_in(m_dir[SDM-1:0]),
                 .stpdiv(gconf[`TMC429_F_STPDIV]), .step_half(ifconf[`TMC429_F_STEP_HALF]),
                 .step(sd_step[SDM-1:0]), .dir(sd_dir[SDM-1:0]),
-                .step_n(sd_step_n[SDM-1:0]), .dir_n(sd_dir_n[SDM-1:0]));
+                .step_nx(sd_step_nx[SDM-1:0]), .dir_nx(sd_dir_nx[SDM-1:0]));
             if (SDM < 3) begin : g_tie
                 assign sd_step[2:SDM] = 0;   assign sd_dir[2:SDM] = 0;
-                assign sd_step_n[2:SDM] = 0; assign sd_dir_n[2:SDM] = 0;
+                assign sd_step_nx[2:SDM] = 0; assign sd_dir_nx[2:SDM] = 0;
             end
         end
     endgenerate
@@ -345,9 +346,10 @@ module tmc429_top #(
 
     // output pins and the 74HC157 switch sampling (C81, C87, C90-C93)
     tmc429_drvpins #(.CHIP(CHIP)) u_pins (
-        .clk(clk), .rst(rst), .spi_n(spi_nx), .sd_n(sd_nx),
-        .take(take), .cs_ns(c_cs_ns), .sck_ns(c_sck_ns), .sdo_n(c_sdo_n), .motor_ns(c_motor_ns),
-        .step_n(sd_step_n), .dir_n(sd_dir_n),
+        .clk(clk), .rst(rst), .spi_nx(spi_nx), .sd_nx(sd_nx),
+        .take(take), .cs_pre_nx(c_cs_pre_nx), .sck_pre_nx(c_sck_pre_nx),
+        .sdo_nx(c_sdo_nx), .motor_pre_nx(c_motor_pre_nx),
+        .step_nx(sd_step_nx), .dir_nx(sd_dir_nx),
         .pol_nscs_s(gconf_nx[`TMC429_F_POLARITY_NSCS_S]), .pol_sck_s(gconf_nx[`TMC429_F_POLARITY_SCK_S]),
         .cs_com_ind(gconf_nx[`TMC429_F_CS_COM_IND]), .refmux(gconf_nx[`TMC429_F_REFMUX]),
         .inv_ref(ifconf_nx[`TMC429_F_INV_REF]), .inv_stp(ifconf_nx[`TMC429_F_INV_STP]),

@@ -128,7 +128,7 @@ impl Tmc429 {
     /// One edge of a copy `c` of the driver chain in the world of the current state: its global
     /// registers, RAM, motors, current scales, ramp ticks and SDI_S. This is the chain's edge of
     /// [`Tmc429::tick`] (C80–C89); nothing happens when powered down (C66). Gives the RTL's
-    /// next-state outputs (`cs_ns`, ...) in `c` and its handshake outputs (`take`, `ret_cw`,
+    /// next-state outputs (`cs_pre_nx`, ...) in `c` and its handshake outputs (`take`, `ret_cw`,
     /// `ret_dgw`) for test vectors.
     pub fn chain_step(&self, c: &mut chain::Chain) -> chain::Handshake {
         if self.power_down || self.chip == Chip::Tmc4210 {

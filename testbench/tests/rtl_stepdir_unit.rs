@@ -112,12 +112,12 @@ module tb;
     reg run = 0, en = 0, step_half = 0;
     reg [3:0] phase = 0, stpdiv = 0;
     reg [2:0] step_in = 0, dir_in = 0;
-    wire [2:0] step, dir, step_n, dir_n;
+    wire [2:0] step, dir, step_nx, dir_nx;
     reg [22:0] vec [0:NVEC-1];
     integer i, bad;
     tmc429_stepdir #(.MOTORS(3)) dut (.clk(clk), .rst(rst), .run(run), .en(en), .phase(phase),
         .step_in(step_in), .dir_in(dir_in), .stpdiv(stpdiv), .step_half(step_half),
-        .step(step), .dir(dir), .step_n(step_n), .dir_n(dir_n));
+        .step(step), .dir(dir), .step_nx(step_nx), .dir_nx(dir_nx));
     always #5 clk = ~clk;
     initial begin
         $readmemh("vectors.hex", vec);

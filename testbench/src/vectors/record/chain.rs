@@ -49,10 +49,10 @@ pub fn chain_layout() -> Layout {
         output("sck", 1),
         output("sdo", 1),
         output("motor", 2),
-        output("cs_ns", 1),
-        output("sck_ns", 1),
-        output("sdo_n", 1),
-        output("motor_ns", 2),
+        output("cs_pre_nx", 1),
+        output("sck_pre_nx", 1),
+        output("sdo_nx", 1),
+        output("motor_pre_nx", 2),
         output("state", 3),
         output("cidx", 6),
         output("bits", 7),
@@ -194,9 +194,9 @@ impl Recorder for ChainPins {
     fn finish(self: Box<Self>, meta: &Meta) -> Result<Vec<AtomicFile>, String> {
         let mut meta = meta.clone();
         meta.notes.push(
-            "combinational outputs (ram_re, ram_addr, take, ret_cw, ret_dgw, cs_ns, sck_ns, sdo_n, motor_ns) of \
-             the state after the edge with the line's inputs (cs_ns, sck_ns, motor_ns: the next levels unless \
-             a datagram starts); ram_addr compared while ram_re (0 otherwise); ram_q is the cell read at \
+            "combinational outputs (ram_re, ram_addr, take, ret_cw, ret_dgw, cs_pre_nx, sck_pre_nx, sdo_nx, \
+             motor_pre_nx) of the state after the edge with the line's inputs (cs_pre_nx, sck_pre_nx, \
+             motor_pre_nx: the next levels before a start overrides them); ram_addr compared while ram_re (0 otherwise); ram_q is the cell read at \
              the last edge with ram_re"
                 .into(),
         );
