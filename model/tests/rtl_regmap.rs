@@ -67,7 +67,7 @@ fn literal_decodes(source: &str) -> Vec<(usize, String)> {
     let mut found = Vec::new();
     let mut in_index_case = false;
     for (n, line) in source.lines().enumerate() {
-        let code = line.split("//").next().unwrap_or("");
+        let code = rtl::code_of(line);
         if let Some(sel) = after(code, "case").next() {
             let sel = sel.trim_start().trim_start_matches('(').trim_start();
             let name = sel.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).next().unwrap_or("");

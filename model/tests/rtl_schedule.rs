@@ -22,7 +22,7 @@ fn literal_phases(text: &str) -> Vec<(usize, String)> {
     let mut found = Vec::new();
     let mut in_phase_case = false;
     for (n, line) in text.lines().enumerate() {
-        let code = line.split("//").next().unwrap_or("");
+        let code = rtl::code_of(line);
         let t = code.trim_start();
         if t.starts_with("case") {
             in_phase_case = PHASE_SIGNALS.iter().any(|s| t.contains(&format!("({s})")));

@@ -17,8 +17,7 @@ const OTHER_SUFFIXES: &[&str] = &["_n", "_ns", "_next", "_d"];
 fn other_suffixes(text: &str) -> Vec<(usize, String)> {
     let mut found = Vec::new();
     for (n, line) in text.lines().enumerate() {
-        let code = line.split("//").next().unwrap_or("");
-        let code: String = code.split('"').step_by(2).collect::<Vec<_>>().join(" ");
+        let code: String = rtl::code_of(line).split('"').step_by(2).collect::<Vec<_>>().join(" ");
         for name in code.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '$' || c == '\'')) {
             let plain = !name.contains('\'') && !name.starts_with(|c: char| c.is_ascii_digit() || c == '$');
             if plain && OTHER_SUFFIXES.iter().any(|s| name.len() > s.len() && name.ends_with(s)) {
@@ -35,9 +34,9 @@ fn other_suffixes(text: &str) -> Vec<(usize, String)> {
 fn file_rules(text: &str) -> Vec<(usize, String)> {
     let mut found = Vec::new();
     let lines: Vec<&str> = text.lines().collect();
-    let first = |p: &dyn Fn(&str) -> bool| lines.iter().position(|l| p(l.split("//").next().unwrap_or("").trim()));
-    let module = first(&|t| t.starts_with("module "));
-    let none = first(&|t| t == "`default_nettype none");
+    let code: Vec<&str> = lines.iter().map(|l| rtl::code_of(l).trim()).collect();
+    let module = code.iter().position(|t| t.starts_with("module "));
+    let none = code.iter().position(|&t| t == "`default_nettype none");
     match (none, module) {
         (Some(a), Some(b)) if a < b => {}
         _ => found.push((module.map_or(1, |b| b + 1), "`default_nettype none` before the module".into())),
@@ -45,8 +44,7 @@ fn file_rules(text: &str) -> Vec<(usize, String)> {
     if lines.last().map(|l| l.trim()) != Some("`default_nettype wire") {
         found.push((lines.len(), "`default_nettype wire` as the last line".into()));
     }
-    for (n, line) in lines.iter().enumerate() {
-        let code = line.split("//").next().unwrap_or("").trim();
+    for (n, &code) in code.iter().enumerate() {
         if module.is_some_and(|b| n > b) && code.starts_with("module ") {
             found.push((n + 1, "one module per file".into()));
         }

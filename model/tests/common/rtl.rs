@@ -12,6 +12,11 @@ pub fn starts_with_number(s: &str) -> bool {
     s.trim_start().starts_with(|c: char| c.is_ascii_digit())
 }
 
+/// The code of an RTL source line: its text before a `//` comment.
+pub fn code_of(line: &str) -> &str {
+    line.split("//").next().unwrap_or("")
+}
+
 /// The generated header `name` in `rtl/` as the file holds it.
 pub fn header(name: &str) -> String {
     let path = rtl_dir().join(name);
