@@ -11,7 +11,9 @@
 // registers formed one edge ahead: the phase after this edge is p + run, the frame changes
 // only from phase 31 to 0, and the divider after this edge is the one a µC write of
 // clk_config in this edge stores (`w_div`, a strobe the register file decodes one edge ahead,
-// with that write's data `w_ramp_div`, `w_pulse_div`). Same function as
+// with that write's data `w_ramp_div`, `w_pulse_div`). The slots' phases themselves (each
+// slot's and the one before it) are flip-flops decoded one edge ahead from p + run, so a tick's
+// input starts at flip-flops, run and the power-down state after the edge. Same function as
 // tmc429_model::schedule.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -68,6 +70,11 @@ module tmc429_schedule (
     end
 
     wire [4:0] ph      = prescaler[4:0];
+    // the phase after this edge is k (the counter moves only with run)
+    function at_nx;
+        input [4:0] k;
+        at_nx = run ? (ph == k - 5'd1) : (ph == k);
+    endfunction
     // a frame of the divider a µC write of clk_config in this edge stores (C40)
     wire       r_due_w = ones_q >= w_ramp_div;
     wire       p_due_w = ones_q >= w_pulse_div;
@@ -82,13 +89,30 @@ module tmc429_schedule (
             localparam [4:0] PH_RAMP = `TMC429_PH_RAMP(g);
             localparam [4:0] PH_PULSE = `TMC429_PH_PULSE(g);
             localparam [4:0] PH_COND = `TMC429_PH_COMMIT(g);
-            wire ph_ramp_nx  = ~pd_nx & (run ? (ph == PH_RAMP - 5'd1) : (ph == PH_RAMP));
-            wire ph_pulse_nx = ~pd_nx & (run ? (ph == PH_PULSE - 5'd1) : (ph == PH_PULSE));
+            // the phase is each slot's, or the one before it (at_*: the phase is the slot's,
+            // pre_*: the slot's minus 1), as flip-flops formed one edge ahead from the phase
+            // after this edge (p + run; 0 after reset), so that the ticks after this edge come
+            // from flip-flops and run, not from the counter's decode (docs/rtl.md, "Slots
+            // decoded one edge ahead")
+            reg  pre_ramp, at_ramp, pre_pulse, at_pulse, pre_cond, at_cond;
+            wire ph_ramp_nx  = ~pd_nx & (run ? pre_ramp : at_ramp);
+            wire ph_pulse_nx = ~pd_nx & (run ? pre_pulse : at_pulse);
             assign ramp_ld[g] = ph_ramp_nx;
             assign ramp_tick_nx[g] = ph_ramp_nx & r_due;
             // the condition slot: the commit phase of every frame, whether the core runs in
             // it or not (tmc429_ramp acts on it only with run)
-            assign sample_tick[g] = run ? (ph == PH_COND - 5'd1) : (ph == PH_COND);
+            assign sample_tick[g] = run ? pre_cond : at_cond;
+            always @(posedge clk) begin
+                if (rst) begin
+                    {pre_ramp, at_ramp} <= {PH_RAMP == 5'd1, PH_RAMP == 5'd0};
+                    {pre_pulse, at_pulse} <= {PH_PULSE == 5'd1, PH_PULSE == 5'd0};
+                    {pre_cond, at_cond} <= {PH_COND == 5'd1, PH_COND == 5'd0};
+                end else begin
+                    {pre_ramp, at_ramp} <= {at_nx(PH_RAMP - 5'd1), at_nx(PH_RAMP)};
+                    {pre_pulse, at_pulse} <= {at_nx(PH_PULSE - 5'd1), at_nx(PH_PULSE)};
+                    {pre_cond, at_cond} <= {at_nx(PH_COND - 5'd1), at_nx(PH_COND)};
+                end
+            end
             always @(posedge clk) begin
                 if (rst) begin
                     ramp_tick[g] <= 1'b0;
