@@ -37,6 +37,7 @@ module tmc429_accel #(
     /* verilator lint_off UNUSEDSIGNAL */   // NMOT = 1: motor 0's operands alone
     input  wire [2:0]  ld,         // the next cycle is motor m's ramp phase (at most one)
     input  wire [2:0]  tick,       // motor m's ramp tick is this edge's (0 while powered down)
+    input  wire        run,        // not powered down: the phase moves in this edge
     input  wire [4:0]  phase,      // prescaler[4:0]
     // per-motor operands after this edge, motor m in bits [w*(m+1)-1 : w*m]
     input  wire [59:0] v_hold,     // V unless its tick loads it, 1/256 units, two's complement
@@ -87,7 +88,7 @@ module tmc429_accel #(
     wire [10:0] am_val;
     tmc429_pram #(.DW(11), .NMOT(NMOT),
                   .R1(`TMC429_PH_RAMP(1) - 5'd2), .R2(`TMC429_PH_RAMP(2) - 5'd2)) u_amax (
-        .clk(clk), .rst(rst), .phase(phase),
+        .clk(clk), .rst(rst), .run(run), .phase(phase),
         .we(a_max_we), .wm(a_max_m), .wd(a_max_wd), .fd(a_max_wd), .ra(am_ra), .val(am_val));
     always @(posedge clk) begin
         if (rst) begin

@@ -5,7 +5,7 @@
 // µC writes it into this RAM (one word per motor) and the RAM is read in every edge at the
 // word of the motor m with R(m) <= phase < R(m+1) (R(0) = 0; R1 and R2 are parameters; the
 // phase is prescaler[4:0], which stands still while powered down, so the read goes on at the
-// same word). `val` is the register of that motor as it holds in this cycle: the read of the
+// same word). The read address is a register formed in the edge before from the phase after it. `val` is the register of that motor as it holds in this cycle: the read of the
 // edge before; or, when the µC wrote the word read in that edge (the read gives the old word
 // then, C3), `fd`, the write data of the edge before (the datagram's data still holds in the
 // edge after its write, so a user may pass wd itself, or a register of a wd formed by a carry
@@ -27,6 +27,7 @@ module tmc429_pram #(
     input  wire          clk,
     input  wire          rst,
     /* verilator lint_off UNUSEDSIGNAL */   // NMOT = 1: one word, no read address
+    input  wire          run,         // the phase moves in this edge (not powered down)
     input  wire [4:0]    phase,       // prescaler[4:0]
     input  wire          we,          // a µC write of this register executes in this edge ...
     input  wire [1:0]    wm,          // ... to this motor ...
@@ -50,7 +51,24 @@ module tmc429_pram #(
             assign ra  = 2'd0;
             assign val = r;
         end else begin : three
-            assign ra = (phase >= R2) ? 2'd2 : ((phase >= R1) ? 2'd1 : 2'd0);
+            // the word read, a register formed one edge ahead: the phase after this edge is
+            // p + run (0 after reset), so the word of phase p + 1 is bit p of each bound's
+            // phase set rotated by one (GE*_NX), a decode of the counter and run with no
+            // increment and no comparison in front of the RAM's address
+            localparam [31:0] GE1 = ~((32'd1 << R1) - 32'd1);   // bit p: p >= R1
+            localparam [31:0] GE2 = ~((32'd1 << R2) - 32'd1);
+            localparam [31:0] GE1_NX = {GE1[0], GE1[31:1]};      // bit p: p + 1 >= R1 (mod 32)
+            localparam [31:0] GE2_NX = {GE2[0], GE2[31:1]};
+            wire ge1_nx = run ? GE1_NX[phase] : GE1[phase];
+            wire ge2_nx = run ? GE2_NX[phase] : GE2[phase];
+            reg  [1:0] ra_q;
+            always @(posedge clk) begin
+                if (rst)
+                    ra_q <= {GE2[0], ~GE2[0] & GE1[0]};
+                else
+                    ra_q <= {ge2_nx, ~ge2_nx & ge1_nx};
+            end
+            assign ra = ra_q;
             wire [DW-1:0] q;
             wire          wq;
             tmc429_wram #(.AW(2), .DW(DW), .WMASK(4'b0111)) u_mem (

@@ -37,6 +37,7 @@ module tmc429_regfile #(
     // word (ram_we, address w_addr), the register index and the datagram's data
     output wire        mot_we,
     output wire [1:0]  mot_sel,
+    output wire [2:0]  mot_wm,        // mot_we of motor m alone (bit m)
     output wire        ram_we,
     output wire [5:0]  w_addr,
     output wire [3:0]  w_idx,
@@ -108,7 +109,7 @@ module tmc429_regfile #(
     wire [3:0]  jdx   = a7[`TMC429_A7_IDX];
     wire        wr_ram = wr & a7[`TMC429_A7_RRS];
     wire        wr_reg = wr & ~a7[`TMC429_A7_RRS];                      // one of the 64 registers
-    wire        wr_mot = wr_reg & ({1'b0, a7[`TMC429_A7_SMDA]} < NMOT3); // of a motor the variant has
+    reg         wr_mot;        // of a motor the variant has: a flip-flop (one edge ahead, below)
     assign mot_we  = wr_mot;
     assign mot_sel = a7[`TMC429_A7_SMDA];
     assign ram_we  = wr_ram;
@@ -118,9 +119,10 @@ module tmc429_regfile #(
 
     // ---- write strobes one edge ahead -------------------------------------------------
     // The writes that the frame schedule and the driver side take into next states formed one
-    // edge ahead (power_down, each motor's clk_config, global_parameters, if_configuration) are
-    // flip-flops: decoded from exec and the address byte of the next edge (tmc429_spi_slave),
-    // so in the edge a write executes each equals the decode of exec and cmd above
+    // edge ahead (power_down, each motor's clk_config, global_parameters, if_configuration)
+    // and the write of a motor's register (mot_we, and each motor's mot_wm) are flip-flops:
+    // decoded from exec and the address byte of the next edge (tmc429_spi_slave), so in the
+    // edge a write executes each equals the decode of exec and cmd above
     /* verilator lint_off UNUSEDSIGNAL */
     wire [31:0] cmd_nx = {addr_nx, 24'd0};
     /* verilator lint_on UNUSEDSIGNAL */
@@ -130,8 +132,9 @@ module tmc429_regfile #(
     reg         w_pd, w_gconf, w_ifconf;
     always @(posedge clk) begin
         if (rst) begin
-            w_pd <= 1'b0;  w_gconf <= 1'b0;  w_ifconf <= 1'b0;
+            w_pd <= 1'b0;  w_gconf <= 1'b0;  w_ifconf <= 1'b0;  wr_mot <= 1'b0;
         end else begin
+            wr_mot   <= reg_nx & ({1'b0, a7_nx[`TMC429_A7_SMDA]} < NMOT3);
             w_pd     <= glb_nx & (a7_nx[`TMC429_A7_IDX] == `TMC429_JDX_POWER_DOWN);
             w_gconf  <= glb_nx & (a7_nx[`TMC429_A7_IDX] == `TMC429_JDX_GLOBAL_PARAMETERS);
             w_ifconf <= glb_nx & HAS_429 & (a7_nx[`TMC429_A7_IDX] == `TMC429_JDX_IF_CONFIGURATION);
@@ -191,7 +194,7 @@ module tmc429_regfile #(
         end
     end
 
-    // ---- clk_config writes, one edge ahead (the frame schedule's dividers) ------------------
+    // ---- clk_config writes and each motor's writes, one edge ahead -------------------------
     genvar g;
     generate
         for (g = 0; g < 3; g = g + 1) begin : mot
@@ -205,6 +208,15 @@ module tmc429_regfile #(
                            & (a7_nx[`TMC429_A7_IDX] == `TMC429_IDX_CLK_CONFIG);
             end
             assign w_div[g] = w_clk;
+            // a write of one of this motor's registers executes in this edge
+            reg  w_m;
+            always @(posedge clk) begin
+                if (rst)
+                    w_m <= 1'b0;
+                else
+                    w_m <= reg_nx & (g < NMOT) & (a7_nx[`TMC429_A7_SMDA] == g);
+            end
+            assign mot_wm[g] = w_m;
         end
     endgenerate
 
@@ -231,11 +243,11 @@ module tmc429_regfile #(
             tol_fd <= tol_wd;
     end
     tmc429_pram #(.DW(11), .NMOT(NMOT), .R1(RC1), .R2(RC2)) u_vmin (
-        .clk(clk), .rst(rst), .phase(ph),
+        .clk(clk), .rst(rst), .run(run), .phase(ph),
         .we(wr_mot & (jdx == `TMC429_IDX_V_MIN)), .wm(a7[`TMC429_A7_SMDA]),
         .wd(wdata[`TMC429_F_V_MIN]), .fd(wdata[`TMC429_F_V_MIN]), .ra(cond_ra_v), .val(cond_vmin));
     tmc429_pram #(.DW(13), .NMOT(NMOT), .R1(RC1), .R2(RC2), .RESET(13'h1FFF)) u_tol (
-        .clk(clk), .rst(rst), .phase(ph),
+        .clk(clk), .rst(rst), .run(run), .phase(ph),
         .we(wr_mot & (jdx == `TMC429_IDX_DX_REF_TOLERANCE)), .wm(a7[`TMC429_A7_SMDA]),
         .wd(tol_wd), .fd(tol_fd), .ra(cond_ra_t), .val(cond_tol_m1));
 

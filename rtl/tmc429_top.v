@@ -110,6 +110,7 @@ module tmc429_top #(
     // the decoded write and the read's register index
     wire        mot_we, ram_we;
     wire [1:0]  mot_sel;
+    wire [2:0]  mot_wm;
     wire [5:0]  w_addr;
     wire [3:0]  w_idx;
     wire [23:0] w_data;
@@ -145,7 +146,7 @@ module tmc429_top #(
         .clk(clk), .rst(rst),
         .exec(exec), .cmd(cmd), .exec_nx(exec_nx), .addr_nx(addr_nx), .frame_start(frame_start),
         .rd_addr(rd_addr), .rd_addr_q(rd_addr_q), .rd_addr_new(rd_addr_new), .rd_load(rd_load), .rd_data(rd_data), .rd_round(rd_round),
-        .mot_we(mot_we), .mot_sel(mot_sel), .ram_we(ram_we), .w_addr(w_addr), .w_idx(w_idx),
+        .mot_we(mot_we), .mot_sel(mot_sel), .mot_wm(mot_wm), .ram_we(ram_we), .w_addr(w_addr), .w_idx(w_idx),
         .w_data(w_data), .rd_idx(rd_idx),
         .m_rdata(m_rdata), .m_xeqt(m_xeqt), .m_irq(m_irq),
         .m_v_hi({p_v[59:48], p_v[39:28], p_v[19:8]}), .m_v_rnd(m_v_rnd), .m_x_actual(p_x_actual),
@@ -197,7 +198,7 @@ module tmc429_top #(
             // scripts/motor-check)
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & (g < NMOT)),
-                .we((g < NMOT) ? (mot_we & (mot_sel == g)) : 1'b0), .widx(w_idx), .wdata(w_data),
+                .we((g < NMOT) ? mot_wm[g] : 1'b0), .widx(w_idx), .wdata(w_data),
                 .rsel(rd_idx), .rd_load(rd_load), .rdata(m_rdata[24*g+23:24*g]),
                 .sw_l(sw_l[g]), .sw_r(sw_r[g]),
                 .sample_tick(sample_tick[g]), .cond_tick(cond_tick[g]),
@@ -220,7 +221,7 @@ module tmc429_top #(
     // ---- the ramp tick's arithmetic, one unit for the three motors' staggered ticks (C41,
     // C51): its operands are registered in the edge into a motor's ramp phase
     tmc429_accel #(.NMOT(NMOT)) u_accel (
-        .clk(clk), .rst(rst), .ld(ramp_ld), .tick(rtick), .phase(prescaler[4:0]),
+        .clk(clk), .rst(rst), .ld(ramp_ld), .tick(rtick), .run(run), .phase(prescaler[4:0]),
         .v_hold(m_v_hold), .vt(m_vt), .stop_soft(m_stop_soft),
         .a_max_we(mot_we & (w_idx == `TMC429_IDX_A_MAX)), .a_max_m(mot_sel),
         .a_max_wd(w_data[`TMC429_F_A_MAX]),

@@ -28,7 +28,7 @@ module tb_ramp;
     // tick (a line with ramp_tick and run) and stored by the unit in its next running edge
     tmc429_accel #(.NMOT(1)) accel (
         .clk(clk), .rst(vin[115]), .ld({2'b00, vin_nx[111]}), .tick({2'b00, vin[111] & vin[114]}),
-        .phase(5'd0),
+        .run(vin[114]), .phase(5'd0),
         .v_hold({40'd0, v_hold}), .vt({24'd0, vin_nx[42:31]}),
         .stop_soft({2'b00, stop_soft}),
         .a_max_we(1'b1), .a_max_m(2'd0), .a_max_wd(vin_nx[72:62]),
