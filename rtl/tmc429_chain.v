@@ -171,9 +171,15 @@ module tmc429_chain (
     reg [47:0] readback_nx;
 
     // ---- RAM reads ahead of a bit (C80) ------------------------------------------------------
-    wire       pre_bit  = (state == SETUP) | (state == HIGH) | (state == GAP);
-    wire       rd_cfg   = pre_bit & (cnt == 10'd4);
-    wire       rd_lut   = pre_bit & (cnt == 10'd3);
+    // The two reads are registers formed with the next state (below), so that the RAM's read
+    // enable and address start at flip-flops: rd_cfg = pre_bit & cnt = 4, rd_lut = pre_bit &
+    // cnt = 3 in every edge, a start (SETUP, cnt = t_hi) entering only at their last LUT
+    function pre_bit_of;                // the states whose counter leads to a bit (RAM reads)
+        input [2:0] st;
+        pre_bit_of = (st == SETUP) | (st == HIGH) | (st == GAP);
+    endfunction
+    wire       pre_bit  = pre_bit_of(state);
+    reg        rd_cfg, rd_lut, rd_cfg_pre_nx, rd_lut_pre_nx;
     wire       pre_dac  = pre_bit & (cnt == 10'd2);
     wire [5:0] cfg_cell = (state == HIGH) ? cidx + 6'd1 : cidx;
 
@@ -232,6 +238,7 @@ module tmc429_chain (
         cover_busy_nx = cover_busy;  dgw_busy_nx = dgw_busy;  readback_nx = readback;
         cs_pre_nx = cs;  sck_pre_nx = sck;  sdo_nx = sdo;
         start = 1'b0;  take = 1'b0;  ret_cw = 1'b0;  ret_dgw = 1'b0;
+        rd_cfg_pre_nx = rd_cfg;  rd_lut_pre_nx = rd_lut;
         if (run) begin
             if (!spi_mode) begin
                 if (state != IDLE || cs || req || stepped != 3'd0) begin
@@ -241,6 +248,7 @@ module tmc429_chain (
                     motor_pre_nx = 2'd0;  req_nx = 1'b0;  stepped_nx = 3'd0;  nxm_nx = 1'b0;
                     cover_busy_nx = 1'b0;  dgw_busy_nx = 1'b0;
                     cs_pre_nx = 1'b0;  sck_pre_nx = 1'b1;  sdo_nx = 1'b1;
+                    rd_cfg_pre_nx = 1'b0;  rd_lut_pre_nx = 1'b0;
                 end
             end else begin
                 start = can_start & request;
@@ -289,6 +297,9 @@ module tmc429_chain (
                     end
                     endcase
                 end
+                // the reads after this edge unless it starts a datagram
+                rd_cfg_pre_nx = pre_bit_of(state_nx) & (cnt_nx == 10'd4);
+                rd_lut_pre_nx = pre_bit_of(state_nx) & (cnt_nx == 10'd3);
                 if (start) begin
                     take = 1'b1;
                     cover_busy_nx = cw;  dgw_busy_nx = dgw;
@@ -314,13 +325,16 @@ module tmc429_chain (
     // a start sets CS active, SCK high and motor 0; the pin registers (tmc429_drvpins)
     // select the same after `take`, so that the start is the last input of a pin's level
     wire       cs_nx    = take | cs_pre_nx;
+    // a start enters SETUP with cnt = t_hi
+    wire       rd_cfg_nx = take ? (t_hi == 9'd4) : rd_cfg_pre_nx;
+    wire       rd_lut_nx = take ? (t_hi == 9'd3) : rd_lut_pre_nx;
     wire       sck_nx   = take | sck_pre_nx;
     wire [1:0] motor_nx = take ? 2'd0 : motor_pre_nx;
 
     always @(posedge clk) begin
         if (rst) begin
             state <= IDLE;  cnt <= 10'd0;  cnt_gt1 <= 1'b0;  cidx <= 6'd0;  motor <= 2'd0;  bits <= 7'd0;
-            can_start <= 1'b1;  hi_nxm <= 1'b0;
+            can_start <= 1'b1;  hi_nxm <= 1'b0;  rd_cfg <= 1'b0;  rd_lut <= 1'b0;
             req <= 1'b0;  stepped <= 3'd0;  nxm <= 1'b0;
             cover_busy <= 1'b0;  dgw_busy <= 1'b0;  readback <= 48'd0;
             cs <= 1'b0;  sck <= 1'b1;  sdo <= 1'b1;
@@ -328,7 +342,7 @@ module tmc429_chain (
             ramp_tick <= 3'd0;  cont_update <= 1'b0;  wrap <= 1'b0;
         end else begin
             state <= state_nx;  cnt <= cnt_nx;  cnt_gt1 <= gt1_nx;  cidx <= cidx_nx;  motor <= motor_nx;
-            can_start <= can_start_nx;  hi_nxm <= hi_nxm_nx;
+            can_start <= can_start_nx;  hi_nxm <= hi_nxm_nx;  rd_cfg <= rd_cfg_nx;  rd_lut <= rd_lut_nx;
             bits <= bits_nx;  req <= req_nx;  stepped <= stepped_nx;  nxm <= nxm_nx;
             cover_busy <= cover_busy_nx;  dgw_busy <= dgw_busy_nx;  readback <= readback_nx;
             cs <= cs_nx;  sck <= sck_nx;  sdo <= sdo_nx;
