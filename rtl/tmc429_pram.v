@@ -5,15 +5,15 @@
 // µC writes it into this RAM (one word per motor) and the RAM is read in every edge at the
 // word of the motor m with R(m) <= phase < R(m+1) (R(0) = 0; R1 and R2 are parameters; the
 // phase is prescaler[4:0], which stands still while powered down, so the read goes on at the
-// same word). The read address is a register formed in the edge before from the phase after it. `val` is the register of that motor as it holds in this cycle: the read of the
-// edge before; or, when the µC wrote the word read in that edge (the read gives the old word
-// then, C3), `fd`, the write data of the edge before (the datagram's data still holds in the
-// edge after its write, so a user may pass wd itself, or a register of a wd formed by a carry
-// chain, which then is not in the path from the forwarding into val's users); or the reset
-// value RESET while the word was never written (C2). A µC write in this edge is not in `val`
-// (it is the old state's value); `ra` is the word read in this edge, for a user whose own
-// register takes the value after this edge. With one motor (NMOT = 1, the TMC4210) the word is
-// a flip-flop register loaded by the write: the same `val`, with less logic than RAM and forwarding.
+// same word; the read address is a register formed in the edge before). `val` is the register
+// of that motor as it holds in this cycle: the read of the edge before; or, when the µC wrote
+// the word read in that edge (the read gives the old word then, C3), `fd`, the write data of
+// the edge before (the datagram's data holds in the edge after its write: a user may pass wd,
+// or a register of a wd formed by a carry chain, then not in the path from the forwarding into
+// val's users); or the reset value RESET while the word was never written (C2). A µC write in
+// this edge is not in `val` (the old state's value); `ra` is the word read in this edge, for a
+// user whose own register takes the value after this edge. With one motor (NMOT = 1, the
+// TMC4210) the word is a flip-flop register loaded by the write: the same `val`, less logic.
 `timescale 1ns / 1ps
 `default_nettype none
 

@@ -92,8 +92,8 @@ module tmc429_schedule (
             // the phase is each slot's, or the one before it (at_*: the phase is the slot's,
             // pre_*: the slot's minus 1), as flip-flops formed one edge ahead from the phase
             // after this edge (p + run; 0 after reset), so that the ticks after this edge come
-            // from flip-flops and run, not from the counter's decode (docs/rtl.md, "Slots
-            // decoded one edge ahead")
+            // from flip-flops and run, not from the counter's decode (docs/rtl.md, "How the
+            // RTL's timing maps to the model contract")
             reg  pre_ramp, at_ramp, pre_pulse, at_pulse, pre_cond, at_cond;
             wire ph_ramp_nx  = ~pd_nx & (run ? pre_ramp : at_ramp);
             wire ph_pulse_nx = ~pd_nx & (run ? pre_pulse : at_pulse);
