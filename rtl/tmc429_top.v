@@ -193,8 +193,8 @@ module tmc429_top #(
     generate
         for (g = 0; g < 3; g = g + 1) begin : mot
             // a motor the variant lacks (the TMC4210's 1 and 2) never runs and is never written:
-            // both as constants, so that synthesis removes its registers (mot_we is 0 for its
-            // SMDA already, but only through logic that is simplified after the registers are;
+            // both as constants, so that synthesis removes its registers (its mot_wm is 0
+            // already, but only through a flip-flop simplified after the registers are;
             // scripts/motor-check)
             tmc429_motor_regs #(.CHIP(CHIP)) u_m (
                 .clk(clk), .rst(rst), .run(run & (g < NMOT)),
